@@ -1,0 +1,41 @@
+// Chapter 03: diffuse materials. A Lambertian surface scatters a ray into a direction drawn
+// with density cos(theta) / pi about the normal and attenuates it by its albedo, so after many
+// bounces each pixel estimates L = Le + albedo * L(scattered). Spawned rays start just off the
+// surface (hit_record::spawn_ray), so there is no shadow acne; the PNG is sRGB-encoded.
+#include <memory>
+
+#include "common/lambertian.h"
+#include "common/options.h"
+#include "common/quad.h"
+#include "common/sphere.h"
+
+// Three matte spheres and a small one on a finite xz-rectangle floor, under the sky.
+rt::scene matte_spheres_on_floor() {
+    using rt::color, rt::point3, rt::vec3;
+    auto floor = std::make_shared<rt::lambertian>(color(0.8, 0.8, 0.0));
+    auto blue  = std::make_shared<rt::lambertian>(color(0.1, 0.2, 0.5));
+    auto gray  = std::make_shared<rt::lambertian>(color(0.5, 0.5, 0.5));
+    auto red   = std::make_shared<rt::lambertian>(color(0.7, 0.2, 0.1));
+    auto white = std::make_shared<rt::lambertian>(color(0.9, 0.9, 0.9));
+
+    rt::scene scene;
+    // The floor: y = -0.5, x in [-3, 3], z in [-4, 1]; its far edge shows the sky behind it.
+    scene.world.add(std::make_shared<rt::quad>(point3(-3, -0.5, -4), vec3(6, 0, 0), vec3(0, 0, 5),
+                                               floor));
+    scene.world.add(std::make_shared<rt::sphere>(point3(0, 0, -1.2), 0.5, blue));
+    scene.world.add(std::make_shared<rt::sphere>(point3(-1.1, 0, -1.5), 0.5, gray));
+    scene.world.add(std::make_shared<rt::sphere>(point3(1.1, 0, -1.5), 0.5, red));
+    scene.world.add(std::make_shared<rt::sphere>(point3(0.45, -0.35, -0.55), 0.15, white));
+    scene.sky              = rt::background::sky();
+    scene.cam.aspect_ratio = 16.0 / 9.0;
+    scene.cam.vfov         = 90;
+    scene.cam.lookfrom     = point3(0, 0, 0);
+    scene.cam.lookat       = point3(0, 0, -1);
+    return scene;
+}
+
+int main(int argc, char** argv) {
+    rt::command_line cli("ch03_diffuse", {.width = 400, .render = {.samples_per_pixel = 100,
+                                                                   .max_depth = 50}});
+    return cli.run(argc, argv, matte_spheres_on_floor);
+}

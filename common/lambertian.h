@@ -1,0 +1,21 @@
+// An ideal diffuse reflector: f = albedo / pi, the same from every viewing direction. Chapter 03.
+// Sampling cos(theta)/pi cancels f * cos(theta) / pdf down to the albedo.
+#pragma once
+
+#include "material.h"
+
+namespace rt {
+
+class lambertian : public material {
+public:
+    // Throws user_error unless every channel of albedo is in [0, 1] (more would create energy).
+    explicit lambertian(const color& albedo);
+
+    bool scatter(const ray& r_in, const hit_record& rec, sampler& s, color& attenuation,
+                 ray& scattered) const override;
+
+private:
+    color albedo;
+};
+
+}  // namespace rt

@@ -1,0 +1,80 @@
+// PCG32 (O'Neill 2014): a small, fast generator with 2^63 independent streams and O(log n)
+// jump-ahead, so every pixel sample can own its own reproducible stream. Chapter 02.
+// state' = state * 6364136223846793005 + inc;  output = rotr32(xorshifted, state >> 59).
+#pragma once
+
+#include <cstdint>
+
+#include "scalar.h"
+
+namespace rt {
+
+class pcg32 {
+public:
+    pcg32() = default;
+    pcg32(std::uint64_t sequence, std::uint64_t seed) { set_sequence(sequence, seed); }
+
+    // Selects stream `sequence` and places it at the start given by `seed`.
+    void set_sequence(std::uint64_t sequence, std::uint64_t seed) {
+        state = 0;
+        inc   = (sequence << 1u) | 1u;
+        next_u32();
+        state += seed;
+        next_u32();
+    }
+
+    std::uint32_t next_u32() {
+        std::uint64_t old = state;
+        state             = old * multiplier + inc;
+        auto xorshifted   = static_cast<std::uint32_t>(((old >> 18u) ^ old) >> 27u);
+        auto rot          = static_cast<std::uint32_t>(old >> 59u);
+        return (xorshifted >> rot) | (xorshifted << ((~rot + 1u) & 31u));
+    }
+
+    // A uniform number in [0, 1): 32 random bits scaled by 2^-32, then kept below 1 because a
+    // float cannot hold 1 - 2^-32 and would round up to 1.
+    real uniform() {
+        constexpr real one_minus_epsilon = real(1) - std::numeric_limits<real>::epsilon() / 2;
+        real u = real(next_u32()) * real(0x1p-32);
+        return u < one_minus_epsilon ? u : one_minus_epsilon;
+    }
+
+    // Moves the stream delta steps ahead in O(log delta) (Brown, "Random number generation with
+    // arbitrary strides", 1994): same result as calling next_u32() delta times.
+    void advance(std::uint64_t delta) {
+        std::uint64_t acc_mult = 1, acc_plus = 0;
+        std::uint64_t cur_mult = multiplier, cur_plus = inc;
+        while (delta > 0) {
+            if (delta & 1u) {
+                acc_mult *= cur_mult;
+                acc_plus = acc_plus * cur_mult + cur_plus;
+            }
+            cur_plus = (cur_mult + 1) * cur_plus;
+            cur_mult *= cur_mult;
+            delta >>= 1u;
+        }
+        state = acc_mult * state + acc_plus;
+    }
+
+private:
+    static constexpr std::uint64_t multiplier = 0x5851f42d4c957f2dULL;
+    std::uint64_t state = 0x853c49e6748fea9bULL;
+    std::uint64_t inc   = 0xda3e39cb94b95bdbULL;
+};
+
+// Mixes 64 bits so that nearby inputs give unrelated outputs (the splitmix64 finalizer).
+constexpr std::uint64_t mix_bits(std::uint64_t v) {
+    v ^= v >> 30u;
+    v *= 0xbf58476d1ce4e5b9ULL;
+    v ^= v >> 27u;
+    v *= 0x94d049bb133111ebULL;
+    v ^= v >> 31u;
+    return v;
+}
+
+// A hash of several integers, used to pick a stream per (pixel, seed).
+constexpr std::uint64_t hash_values(std::uint64_t a, std::uint64_t b, std::uint64_t c) {
+    return mix_bits(a ^ mix_bits(b ^ mix_bits(c + 0x9e3779b97f4a7c15ULL)));
+}
+
+}  // namespace rt

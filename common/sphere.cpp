@@ -1,0 +1,59 @@
+#include "sphere.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "error.h"
+
+namespace rt {
+
+sphere::sphere(const point3& center, real radius, std::shared_ptr<material> m)
+    : center_(center), radius_(radius), mat(std::move(m)) {
+    if (!(radius > 0) || !std::isfinite(radius)) {
+        std::ostringstream message;
+        message << "sphere radius must be positive and finite, got " << radius;
+        throw user_error(message.str());
+    }
+    if (!mat) throw user_error("sphere needs a material");
+}
+
+bool sphere::hit(const ray& r, interval ray_t, hit_record& rec) const {
+    // With f = A - C: a t^2 + 2 b t + c = 0, a = b.b, b = f.b, c = f.f - r^2.
+    const vec3& d = r.direction();
+    vec3 f        = r.origin() - center_;
+    real a        = dot(d, d);
+    real b        = dot(f, d);
+    real c        = dot(f, f) - radius_ * radius_;
+
+    // b^2 - a c = a (r^2 - |f_perp|^2), where f_perp is f minus its part along the ray: computing
+    // it this way avoids subtracting two huge, nearly equal numbers for distant spheres.
+    vec3 f_perp         = f - (b / a) * d;
+    real discriminant   = radius_ * radius_ - dot(f_perp, f_perp);
+    if (discriminant < 0) return false;
+
+    // Stable roots: q never cancels, since b and sign(b) sqrt(...) add with the same sign.
+    real q     = -(b + std::copysign(std::sqrt(a * discriminant), b));
+    real t_far = q / a;
+    // q = 0 only for a ray that starts on the sphere and grazes it: both roots are then 0.
+    real t_near = q != 0 ? c / q : t_far;
+    if (t_near > t_far) std::swap(t_near, t_far);
+
+    real root = t_near;
+    if (!ray_t.surrounds(root)) {
+        root = t_far;
+        if (!ray_t.surrounds(root)) return false;
+    }
+
+    rec.t = root;
+    // Project the point back onto the sphere: p then lies within a few ulps of the surface
+    // whatever the distance travelled, which keeps the spawn offset small.
+    vec3 from_center     = r.at(root) - center_;
+    vec3 outward_normal  = from_center / from_center.length();
+    rec.p                = center_ + radius_ * outward_normal;
+    rec.p_error          = spawn_offset_scale * (max_abs_component(center_) + radius_);
+    rec.set_face_normal(r, outward_normal);
+    rec.mat = mat.get();
+    return true;
+}
+
+}  // namespace rt
