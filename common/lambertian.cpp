@@ -1,21 +1,13 @@
 #include "lambertian.h"
 
-#include <sstream>
-
-#include "error.h"
 #include "onb.h"
 #include "sampling.h"
+#include "validate.h"
 
 namespace rt {
 
 lambertian::lambertian(const color& a) : albedo(a) {
-    for (int i = 0; i < 3; ++i) {
-        if (!(a[i] >= 0 && a[i] <= 1)) {
-            std::ostringstream message;
-            message << "lambertian albedo must be in [0, 1] per channel, got " << a;
-            throw user_error(message.str());
-        }
-    }
+    require_reflectance(a, "lambertian albedo");
 }
 
 bool lambertian::scatter(const ray& r_in, const hit_record& rec, sampler& s, color& attenuation,

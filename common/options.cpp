@@ -41,9 +41,9 @@ void print_summary(const std::string& name, const chapter_settings& s, int heigh
 }  // namespace
 
 command_line::command_line(std::string program_name, chapter_settings defaults)
-    : program(std::move(program_name)), settings(std::move(defaults)), cli(program) {
-    auto& r = settings.render;
-    cli.add_option("--width", settings.width, "Image width in pixels")
+    : program(std::move(program_name)), current(std::move(defaults)), cli(program) {
+    auto& r = current.render;
+    cli.add_option("--width", current.width, "Image width in pixels")
         ->check(CLI::Range(1, 16384))
         ->capture_default_str();
     cli.add_option("--spp", r.samples_per_pixel, "Samples per pixel")
@@ -56,9 +56,9 @@ command_line::command_line(std::string program_name, chapter_settings defaults)
     cli.add_option("--threads", r.threads, "Worker threads; 0 = all cores")
         ->check(CLI::Range(0, 1024))
         ->capture_default_str();
-    cli.add_option("--out", settings.outputs, "Output image, .png or .pfm; may repeat")
+    cli.add_option("--out", current.outputs, "Output image, .png or .pfm; may repeat")
         ->check(output_file({".png", ".pfm"}));
-    cli.add_option("--variance-out", settings.variance_output,
+    cli.add_option("--variance-out", current.variance_output,
                    "Also write the variance of each pixel's mean, as .pfm")
         ->check(output_file({".pfm"}));
     cli.add_flag("--quiet", r.quiet, "No progress or summary on stderr");
@@ -74,18 +74,18 @@ int command_line::run(int argc, char** argv, const std::function<scene()>& build
         std::fprintf(stderr, "%s: error: %s\n", program.c_str(), e.what());
         return 2;
     }
-    if (settings.outputs.empty()) settings.outputs.push_back(program + ".png");
+    if (current.outputs.empty()) current.outputs.push_back(program + ".png");
 
     try {
         scene sc           = build_scene();
-        sc.cam.image_width = settings.width;
+        sc.cam.image_width = current.width;
         sc.cam.initialize();
-        render_result result = render(sc, settings.render);
-        for (const auto& path : settings.outputs) write_image(path, result.mean);
-        if (!settings.variance_output.empty())
-            write_image(settings.variance_output, result.mean_variance);
-        if (!settings.render.quiet)
-            print_summary(program, settings, sc.cam.image_height(), result.seconds);
+        render_result result = render(sc, current.render);
+        for (const auto& path : current.outputs) write_image(path, result.mean);
+        if (!current.variance_output.empty())
+            write_image(current.variance_output, result.mean_variance);
+        if (!current.render.quiet)
+            print_summary(program, current, sc.cam.image_height(), result.seconds);
         return 0;
     } catch (const user_error& e) {
         std::fprintf(stderr, "%s: error: %s\n", program.c_str(), e.what());

@@ -31,13 +31,18 @@ public:
     CLI::App& app() { return cli; }
     const std::string& name() const { return program; }
 
+    // For a scene function called by run(): whether the user gave `flag` (e.g. "--width"), and
+    // the settings to change where they did not, so a scene can bring its own defaults.
+    bool given(const std::string& flag) const { return cli.count(flag) > 0; }
+    chapter_settings& settings() { return current; }
+
     // Parses the arguments, builds the scene, renders it and writes every output. Returns the
     // exit code: 0 on success (or --help), 2 for a user error with one line on stderr naming it.
     int run(int argc, char** argv, const std::function<scene()>& build_scene);
 
 private:
     std::string program;
-    chapter_settings settings;
+    chapter_settings current;
     CLI::App cli;
 };
 

@@ -24,6 +24,9 @@ bool sphere::hit(const ray& r, interval ray_t, hit_record& rec) const {
     real a        = dot(d, d);
     real b        = dot(f, d);
     real c        = dot(f, f) - radius_ * radius_;
+    // Origin outside (c > 0) and moving away (b > 0): both roots are negative. Most spheres of a
+    // big list are behind the ray, so this cheap test pays for itself.
+    if (c > 0 && b > 0 && ray_t.min >= 0) return false;
 
     // b^2 - a c = a (r^2 - |f_perp|^2), where f_perp is f minus its part along the ray: computing
     // it this way avoids subtracting two huge, nearly equal numbers for distant spheres.

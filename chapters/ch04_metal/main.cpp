@@ -1,0 +1,36 @@
+// Chapter 04: metal. A polished metal reflects a ray as a mirror, r = v - 2 (v.n) n; a brushed
+// one moves the reflected direction by up to `fuzz` inside a ball, blurring the reflection.
+// A fuzzed ray that ends up below the surface is absorbed.
+#include <memory>
+
+#include "common/lambertian.h"
+#include "common/metal.h"
+#include "common/options.h"
+#include "common/sphere.h"
+
+// Book 1's metal scene: a matte sphere between a polished and a fully fuzzy metal sphere.
+rt::scene metal_spheres() {
+    using rt::color, rt::point3;
+    auto ground   = std::make_shared<rt::lambertian>(color(0.8, 0.8, 0.0));
+    auto center   = std::make_shared<rt::lambertian>(color(0.1, 0.2, 0.5));
+    auto polished = std::make_shared<rt::metal>(color(0.8, 0.8, 0.8), 0.3);
+    auto brushed  = std::make_shared<rt::metal>(color(0.8, 0.6, 0.2), 1.0);
+
+    rt::scene scene;
+    scene.world.add(std::make_shared<rt::sphere>(point3(0, -100.5, -1), 100, ground));
+    scene.world.add(std::make_shared<rt::sphere>(point3(0, 0, -1), 0.5, center));
+    scene.world.add(std::make_shared<rt::sphere>(point3(-1, 0, -1), 0.5, polished));
+    scene.world.add(std::make_shared<rt::sphere>(point3(1, 0, -1), 0.5, brushed));
+    scene.sky              = rt::background::sky();
+    scene.cam.aspect_ratio = 16.0 / 9.0;
+    scene.cam.vfov         = 90;
+    scene.cam.lookfrom     = point3(0, 0, 0);
+    scene.cam.lookat       = point3(0, 0, -1);
+    return scene;
+}
+
+int main(int argc, char** argv) {
+    rt::command_line cli("ch04_metal", {.width = 400, .render = {.samples_per_pixel = 100,
+                                                                 .max_depth = 50}});
+    return cli.run(argc, argv, metal_spheres);
+}

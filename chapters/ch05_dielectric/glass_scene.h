@@ -1,0 +1,29 @@
+// Book 1's glass scene, shared by chapter 05 (seen from the origin) and chapter 06 (seen through
+// a positionable thin-lens camera): a hollow glass sphere (an air bubble of index ratio 1/1.5
+// inside glass of index 1.5), a matte sphere and a mirror-polished metal sphere on the ground.
+#pragma once
+
+#include <memory>
+
+#include "common/dielectric.h"
+#include "common/hittable_list.h"
+#include "common/lambertian.h"
+#include "common/metal.h"
+#include "common/sphere.h"
+
+inline rt::hittable_list glass_with_bubble() {
+    using rt::color, rt::point3;
+    auto ground = std::make_shared<rt::lambertian>(color(0.8, 0.8, 0.0));
+    auto center = std::make_shared<rt::lambertian>(color(0.1, 0.2, 0.5));
+    auto glass  = std::make_shared<rt::dielectric>(1.5);
+    auto bubble = std::make_shared<rt::dielectric>(1.0 / 1.5);
+    auto mirror = std::make_shared<rt::metal>(color(0.8, 0.6, 0.2), 0.0);
+
+    rt::hittable_list world;
+    world.add(std::make_shared<rt::sphere>(point3(0, -100.5, -1), 100, ground));
+    world.add(std::make_shared<rt::sphere>(point3(0, 0, -1), 0.5, center));
+    world.add(std::make_shared<rt::sphere>(point3(-1, 0, -1), 0.5, glass));
+    world.add(std::make_shared<rt::sphere>(point3(-1, 0, -1), 0.4, bubble));
+    world.add(std::make_shared<rt::sphere>(point3(1, 0, -1), 0.5, mirror));
+    return world;
+}

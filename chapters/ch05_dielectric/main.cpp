@@ -1,0 +1,24 @@
+// Chapter 05: dielectrics. Glass bends a ray by Snell's law, n1 sin(theta1) = n2 sin(theta2),
+// and reflects part of the light, more at grazing angles (Schlick's approximation of Fresnel).
+// One ray continues per hit: reflection with probability R, refraction otherwise; past the
+// critical angle there is only reflection (total internal reflection).
+#include "common/options.h"
+#include "glass_scene.h"
+
+// The glass sphere with its air bubble, seen from the origin down -z.
+rt::scene glass_scene_from_origin() {
+    rt::scene scene;
+    scene.world            = glass_with_bubble();
+    scene.sky              = rt::background::sky();
+    scene.cam.aspect_ratio = 16.0 / 9.0;
+    scene.cam.vfov         = 90;
+    scene.cam.lookfrom     = rt::point3(0, 0, 0);
+    scene.cam.lookat       = rt::point3(0, 0, -1);
+    return scene;
+}
+
+int main(int argc, char** argv) {
+    rt::command_line cli("ch05_dielectric", {.width = 400, .render = {.samples_per_pixel = 100,
+                                                                      .max_depth = 50}});
+    return cli.run(argc, argv, glass_scene_from_origin);
+}

@@ -1,0 +1,61 @@
+// Chapter 06: a positionable camera with a thin lens. The camera stands at lookfrom, looks at
+// lookat, and vup says which way is up: w = unit(lookfrom - lookat), u = unit(vup x w),
+// v = w x u. Rays start at a random point of a lens disk of diameter --aperture and pass
+// through the point of the focus plane (at --focus-dist) that the pinhole ray would hit, so only
+// that plane is sharp: the circle of confusion grows with the aperture and the distance from it.
+#include <cmath>
+#include <optional>
+
+#include "ch05_dielectric/glass_scene.h"
+#include "common/options.h"
+#include "random_spheres.h"
+
+// The glass scene from above and to the side (the seed report's defocus camera).
+rt::scene glass_scene_through_lens(std::optional<double> aperture, std::optional<double> focus) {
+    rt::scene scene;
+    scene.world        = glass_with_bubble();
+    scene.sky          = rt::background::sky();
+    scene.cam.vfov     = 20;
+    scene.cam.lookfrom = rt::point3(3, 3, 2);
+    scene.cam.lookat   = rt::point3(0, 0, -1);
+    scene.cam.aperture   = aperture.value_or(2.0);
+    scene.cam.focus_dist = focus.value_or(0);  // 0: focus on lookat
+    return scene;
+}
+
+// Book 1's final scene; the book's defocus angle 0.6 degrees at focus distance 10 is a lens of
+// diameter 2 * 10 * tan(0.3 degrees).
+rt::scene final_scene(std::optional<double> aperture, std::optional<double> focus) {
+    rt::scene scene;
+    scene.world          = random_spheres();
+    scene.sky            = rt::background::sky();
+    scene.cam.vfov       = 20;
+    scene.cam.lookfrom   = rt::point3(13, 2, 3);
+    scene.cam.lookat     = rt::point3(0, 0, 0);
+    scene.cam.focus_dist = focus.value_or(10.0);
+    scene.cam.aperture   = aperture.value_or(2 * scene.cam.focus_dist *
+                                           std::tan(rt::degrees_to_radians(0.3)));
+    return scene;
+}
+
+int main(int argc, char** argv) {
+    rt::command_line cli("ch06_defocus", {.width = 400, .render = {.samples_per_pixel = 100,
+                                                                   .max_depth = 50}});
+    std::optional<double> aperture, focus;
+    std::string which = "glass";
+    cli.app().add_option("--aperture", aperture, "Lens diameter (default 2.0; final: 0.105)")
+        ->check(CLI::NonNegativeNumber);
+    cli.app().add_option("--focus-dist", focus, "Distance to the sharp plane (default: lookat)")
+        ->check(CLI::PositiveNumber);
+    cli.app().add_option("--scene", which, "glass, or final (book 1's random spheres)")
+        ->check(CLI::IsMember({"glass", "final"}));
+    return cli.run(argc, argv, [&] {
+        if (which == "glass") return glass_scene_through_lens(aperture, focus);
+        // The final scene's own defaults (book 1: 1200 wide, 10 spp, depth 20) unless given.
+        auto& settings = cli.settings();
+        if (!cli.given("--width")) settings.width = 1200;
+        if (!cli.given("--spp")) settings.render.samples_per_pixel = 10;
+        if (!cli.given("--max-depth")) settings.render.max_depth = 20;
+        return final_scene(aperture, focus);
+    });
+}

@@ -1,0 +1,35 @@
+#include "dielectric.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "error.h"
+#include "optics.h"
+
+namespace rt {
+
+dielectric::dielectric(real index) : ior(index) {
+    if (!(index > 0) || !std::isfinite(index)) {
+        std::ostringstream message;
+        message << "dielectric index of refraction must be positive and finite, got " << index;
+        throw user_error(message.str());
+    }
+}
+
+bool dielectric::scatter(const ray& r_in, const hit_record& rec, sampler& s, color& attenuation,
+                         ray& scattered) const {
+    real choice    = s.next_1d();
+    real eta       = rec.front_face ? 1 / ior : ior;
+    vec3 unit_dir  = unit_vector(r_in.direction());
+    real cos_theta = std::min(dot(-unit_dir, rec.normal), real(1));
+
+    bool reflects = total_internal_reflection(cos_theta, eta) ||
+                    schlick_reflectance(cos_theta, eta) > choice;
+    vec3 direction = reflects ? reflect(unit_dir, rec.normal) : refract(unit_dir, rec.normal, eta);
+
+    scattered   = rec.spawn_ray(direction, r_in.time());
+    attenuation = color(1, 1, 1);  // clear glass absorbs nothing
+    return true;
+}
+
+}  // namespace rt

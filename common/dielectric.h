@@ -1,0 +1,25 @@
+// A clear dielectric (glass, water, air bubbles): each hit either reflects or refracts, chosen
+// at random with the Fresnel reflectance (Schlick) as the probability, so one ray continues and
+// the average is right. Chapter 05.
+// Snell: n1 sin(theta1) = n2 sin(theta2). The index ratio is 1/ior entering (front face) and
+// ior leaving; an air bubble in glass is a sphere with ior = 1/1.5 inside the glass sphere.
+#pragma once
+
+#include "material.h"
+
+namespace rt {
+
+class dielectric : public material {
+public:
+    // ior: refractive index relative to the surrounding medium. Throws user_error unless > 0.
+    explicit dielectric(real ior);
+
+    // Draws 1 sampler dimension (the choice between reflection and refraction).
+    bool scatter(const ray& r_in, const hit_record& rec, sampler& s, color& attenuation,
+                 ray& scattered) const override;
+
+private:
+    real ior;
+};
+
+}  // namespace rt
