@@ -4,6 +4,8 @@
 // L(d) = (1 - a) bottom + a top, with a = (d.y / |d| + 1) / 2.
 #pragma once
 
+#include <cmath>
+
 #include "vec3.h"
 
 namespace rt {
@@ -17,7 +19,10 @@ struct background {
 
     color radiance(const vec3& direction) const {
         real a = real(0.5) * (direction.y() / direction.length() + 1);
-        return (1 - a) * bottom + a * top;
+        // std::lerp, not (1 - a) bottom + a top: it is exact at both ends and returns c itself
+        // when bottom == top == c, so a uniform background is uniform to the last bit.
+        return color(std::lerp(bottom.x(), top.x(), a), std::lerp(bottom.y(), top.y(), a),
+                     std::lerp(bottom.z(), top.z(), a));
     }
 };
 

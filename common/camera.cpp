@@ -39,7 +39,8 @@ void camera::initialize() {
     vec3 u = unit_vector(side);
     vec3 v = cross(w, u);
 
-    height = std::max(1, int(real(image_width) / aspect_ratio));
+    // In double whatever real is, so 400 / (16/9) is 225 rows in both builds, as in the book.
+    height = std::max(1, int(double(image_width) / aspect_ratio));
     center = lookfrom;
 
     real focus      = focus_dist > 0 ? focus_dist : view.length();

@@ -11,7 +11,7 @@ namespace rt {
 
 class camera {
 public:
-    real aspect_ratio = real(16) / 9;       // Ideal width over height; height is rounded down
+    double aspect_ratio = 16.0 / 9;         // Ideal width over height; height is rounded down
     int image_width   = 400;                // Rendered image width in pixels
     real vfov         = 90;                 // Vertical field of view in degrees
     point3 lookfrom   = point3(0, 0, 0);    // Where the camera is

@@ -20,25 +20,28 @@ render_result render(const scene& sc, const render_settings& settings) {
     for (int j = 0; j < height; ++j) {
         sampler s(settings.seed);
         for (int i = 0; i < width; ++i) {
-            // Sums in double: the order is fixed per pixel, so the result is too.
-            double sum[3] = {0, 0, 0}, sum_squares[3] = {0, 0, 0};
+            // Welford's running mean and sum of squared deviations m2, in double: the order is
+            // fixed per pixel, so the result is too. Unlike sum and sum of squares, whose
+            // difference cancels, it gives variance exactly 0 (and the mean exactly L) when every
+            // sample is the same L, and m2 never goes negative.
+            double mean[3] = {0, 0, 0}, m2[3] = {0, 0, 0};
             for (int k = 0; k < spp; ++k) {
                 s.start_pixel_sample(i, j, k);
                 color L = trace_path(sc, cam.get_ray(i, j, s), s, settings.max_depth);
                 for (int c = 0; c < 3; ++c) {
-                    sum[c] += double(L[c]);
-                    sum_squares[c] += double(L[c]) * double(L[c]);
+                    double x     = double(L[c]);
+                    double delta = x - mean[c];
+                    mean[c] += delta / (k + 1);
+                    m2[c] += delta * (x - mean[c]);
                 }
             }
-            color mean, variance;
+            color pixel_mean, variance;
             for (int c = 0; c < 3; ++c) {
-                double m = sum[c] / spp;
-                double sample_var =
-                    spp > 1 ? std::max(0.0, (sum_squares[c] - spp * m * m) / (spp - 1)) : 0.0;
-                mean[c]     = real(m);
-                variance[c] = real(sample_var / spp);
+                double sample_var = spp > 1 ? m2[c] / (spp - 1) : 0.0;
+                pixel_mean[c]     = real(mean[c]);
+                variance[c]       = real(sample_var / spp);
             }
-            result.mean.set(i, j, mean);
+            result.mean.set(i, j, pixel_mean);
             result.mean_variance.set(i, j, variance);
         }
         progress.row_done();

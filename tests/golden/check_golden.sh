@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # One chapter's golden-image test (run by CTest; settings in reference_images/goldens.txt).
-#   check_golden.sh CHAPTER_EXE NAME REF_DIR NOISE_COMPARE WIDTH SPP SEED
+#   check_golden.sh CHAPTER_EXE NAME REF_DIR NOISE_COMPARE WIDTH SPP SEED CONVERGED_SPP
 # 1. renders the chapter at the golden settings (PNG, PFM and the per-pixel variance);
 # 2. idiff against reference_images/NAME.png and NAME.pfm: a regression check, same settings and
 #    seed, so on the blessing machine the images are identical; the thresholds only absorb
@@ -8,7 +8,7 @@
 # 3. noise_compare against NAME.converged.pfm: the render must agree with a many-sample render
 #    within its own noise, so the golden itself is right, not just unchanged.
 set -euo pipefail
-exe=$1 name=$2 refs=$3 noise_compare=$4 width=$5 spp=$6 seed=$7
+exe=$1 name=$2 refs=$3 noise_compare=$4 width=$5 spp=$6 seed=$7 converged_spp=$8
 
 # Thresholds, in linear units for the PFM and display units (0..1) for the PNG.
 IDIFF_ARGS=(-fail 0.02 -failpercent 0.5 -hardfail 0.5 -warn 0.004 -warnpercent 0.5)
@@ -30,8 +30,8 @@ for ext in png pfm; do
         status=1
     fi
 done
-if ! "$noise_compare" "$tmp/$name.pfm" "$tmp/$name.variance.pfm" \
-    "$refs/$name.converged.pfm" "$refs/$name.converged-variance.pfm"; then
+if ! "$noise_compare" "$tmp/$name.pfm" "$tmp/$name.variance.pfm" "$spp" \
+    "$refs/$name.converged.pfm" "$refs/$name.converged-variance.pfm" "$converged_spp"; then
     echo "FAIL: $name does not match its converged reference within its noise"
     status=1
 fi

@@ -1,0 +1,288 @@
+// Tests for image_io.h and display_encoding.h (chapter 01): PFM round trips bit for bit and is
+// laid out as the format says (bottom row first), PNG decodes to the sRGB bytes, bad paths are
+// refused before anything is written, and a failed write never damages an existing file.
+#include <stb/stb_image.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "common/display_encoding.h"
+#include "common/error.h"
+#include "common/image_io.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using rt::color, rt::real;
+
+// A fresh, empty folder under the system's temporary folder, removed with everything in it.
+class temp_folder {
+  public:
+    explicit temp_folder(const std::string& name)
+        : root(fs::temp_directory_path() /
+               ("rt_test_image_io_" + name + "_" + std::to_string(::getpid()))) {
+        fs::remove_all(root);
+        fs::create_directories(root);
+    }
+    ~temp_folder() {
+        std::error_code ec;
+        fs::remove_all(root, ec);
+    }
+    temp_folder(const temp_folder&)            = delete;
+    temp_folder& operator=(const temp_folder&) = delete;
+
+    std::string file(const std::string& name) const { return (root / name).string(); }
+    const fs::path& path() const { return root; }
+
+    // The names in the folder, sorted.
+    std::vector<std::string> entries() const {
+        std::vector<std::string> names;
+        for (const auto& e : fs::directory_iterator(root))
+            names.push_back(e.path().filename().string());
+        std::sort(names.begin(), names.end());
+        return names;
+    }
+
+  private:
+    fs::path root;
+};
+
+std::string read_bytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+void write_text(const std::string& path, const std::string& text) {
+    std::ofstream(path, std::ios::binary) << text;
+}
+
+// An image whose floats exercise every kind of value a PFM must carry: signs, -0, float
+// subnormals, the largest float, and ordinary radiance values; no two pixels alike.
+rt::image test_image(int width, int height) {
+    const float specials[] = {0.0f,  -0.0f, 1e-40f, std::numeric_limits<float>::max(),
+                              -1.5f, 1e-3f, 0.1f,   65504.0f};
+    rt::image img(width, height);
+    int n = 0;
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x, ++n) {
+            float r = specials[n % 8];
+            float g = float(x) / 7.0f + float(y);
+            float b = -float(n) * 0.37f;
+            img.set(x, y, color(real(r), real(g), real(b)));
+        }
+    }
+    return img;
+}
+
+bool same_bits(const rt::image& a, const rt::image& b) {
+    return a.width() == b.width() && a.height() == b.height() &&
+           std::memcmp(a.data().data(), b.data().data(), a.data().size() * sizeof(float)) == 0;
+}
+
+}  // namespace
+
+TEST_CASE("image_io: a PFM written and read back is the same image bit for bit", "[ch01]") {
+    temp_folder dir("roundtrip");
+    for (auto [w, h] : {std::pair{5, 3}, std::pair{1, 1}, std::pair{1, 7}, std::pair{64, 2}}) {
+        INFO(w << " x " << h);
+        rt::image img = test_image(w, h);
+        rt::write_image(dir.file("a.pfm"), img);
+        CHECK(same_bits(rt::read_pfm(dir.file("a.pfm")), img));
+    }
+}
+
+TEST_CASE("image_io: a PFM starts with its header and stores the bottom image row first",
+          "[ch01]") {
+    temp_folder dir("layout");
+    const int w = 5, h = 3;
+    rt::image img = test_image(w, h);
+    rt::write_image(dir.file("a.pfm"), img);
+    std::string bytes = read_bytes(dir.file("a.pfm"));
+
+    const std::string header = "PF\n5 3\n-1.0\n";  // -1: little-endian, as the x86 floats are
+    REQUIRE(bytes.size() == header.size() + std::size_t(w * h * 3) * sizeof(float));
+    CHECK(bytes.substr(0, header.size()) == header);
+    // Stored row r is image row h - 1 - r: the file's first row is the image's last.
+    const std::size_t row_bytes = std::size_t(w * 3) * sizeof(float);
+    for (int stored = 0; stored < h; ++stored) {
+        INFO("stored row " << stored);
+        const float* image_row = img.data().data() + std::size_t((h - 1 - stored) * w * 3);
+        CHECK(std::memcmp(bytes.data() + header.size() + stored * row_bytes, image_row,
+                          row_bytes) == 0);
+    }
+}
+
+TEST_CASE("image_io: a PNG decodes to the 8-bit sRGB codes of the image", "[ch01]") {
+    temp_folder dir("png");
+    const int w = 7, h = 4;
+    rt::image img(w, h);
+    const real nan = std::numeric_limits<real>::quiet_NaN();
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            img.set(x, y, color(real(x) / 6, real(y) / 3, x == 0 ? nan : real(x - 3)));
+    rt::write_image(dir.file("a.png"), img);
+
+    std::string bytes = read_bytes(dir.file("a.png"));
+    REQUIRE(bytes.size() > 8);
+    CHECK(bytes.substr(0, 8) == std::string("\x89PNG\r\n\x1a\n", 8));
+
+    int width = 0, height = 0, channels = 0;
+    unsigned char* pixels = stbi_load(dir.file("a.png").c_str(), &width, &height, &channels, 0);
+    REQUIRE(pixels != nullptr);
+    CHECK(width == w);
+    CHECK(height == h);
+    CHECK(channels == 3);
+    int wrong = 0;
+    if (width == w && height == h && channels == 3) {
+        for (std::size_t i = 0; i < img.data().size(); ++i)
+            if (pixels[i] != rt::to_srgb8(double(img.data()[i]))) ++wrong;
+    }
+    stbi_image_free(pixels);
+    CHECK(wrong == 0);
+}
+
+TEST_CASE("display_encoding: linear_to_srgb follows the sRGB curve and clamps to 0..1", "[ch01]") {
+    auto srgb = [](double L) {  // IEC 61966-2-1, written out independently
+        return L <= 0.0031308 ? 12.92 * L : 1.055 * std::pow(L, 1 / 2.4) - 0.055;
+    };
+    for (double L : {0.0, 0.001, 0.0031308, 0.01, 0.18, 0.5, 0.9, 1.0}) {
+        INFO("L = " << L);
+        CHECK(rt::linear_to_srgb(L) == Approx(srgb(L)).epsilon(1e-14).margin(1e-15));
+    }
+    CHECK(rt::linear_to_srgb(0) == 0);
+    CHECK(rt::linear_to_srgb(0.0031308) == Approx(0.040449936).epsilon(1e-12));
+    CHECK(rt::linear_to_srgb(0.5) == Approx(0.7353569830524495).epsilon(1e-14));
+    CHECK(rt::linear_to_srgb(1) == 1);
+    // The two pieces meet at the threshold (to 3e-8, the precision of the standard's constants).
+    CHECK(std::fabs(12.92 * 0.0031308 - (1.055 * std::pow(0.0031308, 1 / 2.4) - 0.055)) < 1e-7);
+
+    // Out of range: no bad pixel can turn bright.
+    for (double bad : {std::nan(""), -0.5, -std::numeric_limits<double>::infinity(), -0.0}) {
+        INFO("L = " << bad);
+        CHECK(rt::linear_to_srgb(bad) == 0);
+    }
+    for (double bright : {1.5, 1e30, std::numeric_limits<double>::infinity()}) {
+        INFO("L = " << bright);
+        CHECK(rt::linear_to_srgb(bright) == 1);
+    }
+
+    // Every 8-bit code survives decoding to linear and encoding back.
+    int lost = 0;
+    for (int code = 0; code < 256; ++code)
+        if (rt::to_srgb8(rt::srgb_to_linear(code / 255.0)) != code) ++lost;
+    CHECK(lost == 0);
+    CHECK(rt::to_srgb8(0.5) == 188);  // 255 * 0.73536 = 187.52, rounded to nearest
+}
+
+TEST_CASE("image_io: writing into a missing folder throws and creates nothing", "[ch01]") {
+    temp_folder dir("missing");
+    for (const char* name : {"no/such/folder/a.pfm", "no/a.png"}) {
+        INFO(name);
+        CHECK_THROWS_AS(rt::write_image(dir.file(name), test_image(2, 2)), rt::user_error);
+        CHECK_THROWS_WITH(rt::write_image(dir.file(name), test_image(2, 2)),
+                          Catch::Contains("does not exist"));
+    }
+    CHECK(dir.entries().empty());
+}
+
+TEST_CASE("image_io: an unknown extension throws and creates nothing", "[ch01]") {
+    temp_folder dir("extension");
+    for (const char* name : {"a.jpg", "a.exr", "a", "a.pfm.txt"}) {
+        INFO(name);
+        CHECK_THROWS_AS(rt::write_image(dir.file(name), test_image(2, 2)), rt::user_error);
+        CHECK_FALSE(rt::output_path_problem(dir.file(name)).empty());
+    }
+    CHECK(dir.entries().empty());
+    CHECK(rt::output_path_problem(dir.file("a.pfm")).empty());
+    CHECK(rt::output_path_problem(dir.file("a.png")).empty());
+}
+
+TEST_CASE("image_io: an existing file is replaced on success and left intact on failure",
+          "[ch01]") {
+    temp_folder dir("replace");
+    for (const char* name : {"out.pfm", "out.png"}) {
+        INFO(name);
+        const std::string path = dir.file(name);
+
+        // Success: the new image replaces the old file, and no temporary is left beside it.
+        write_text(path, "old contents");
+        rt::write_image(path, test_image(3, 2));
+        CHECK(read_bytes(path) != "old contents");
+        if (std::string(name) == "out.pfm") CHECK(same_bits(rt::read_pfm(path), test_image(3, 2)));
+        CHECK(dir.entries() == std::vector<std::string>{name});
+
+        // Failure: the temporary file cannot be created (a folder, not empty, sits where
+        // write_image puts it: path + ".tmp." + pid, see image_io.cpp). The write must throw
+        // and leave the old file as it was.
+        write_text(path, "old contents");
+        const std::string blocker = path + ".tmp." + std::to_string(::getpid());
+        fs::create_directory(blocker);
+        write_text(blocker + "/keep", "x");
+        CHECK_THROWS_AS(rt::write_image(path, test_image(3, 2)), rt::user_error);
+        CHECK(read_bytes(path) == "old contents");
+        fs::remove_all(blocker);
+        fs::remove(path);
+    }
+
+    // A folder where the file should go is refused, and left alone with what it holds.
+    fs::create_directory(dir.file("folder.pfm"));
+    write_text(dir.file("folder.pfm/inside"), "kept");
+    CHECK_THROWS_AS(rt::write_image(dir.file("folder.pfm"), test_image(3, 2)), rt::user_error);
+    CHECK(fs::is_directory(dir.file("folder.pfm")));
+    CHECK(read_bytes(dir.file("folder.pfm/inside")) == "kept");
+    CHECK(dir.entries() == std::vector<std::string>{"folder.pfm"});
+}
+
+TEST_CASE("image_io: oiiotool reads our PFM with the right size, average and orientation",
+          "[ch01]") {
+    if (std::system("command -v oiiotool > /dev/null 2>&1") != 0) {
+        WARN("oiiotool is not on PATH: skipping the check of our PFM by an independent reader");
+        return;
+    }
+    temp_folder dir("oiiotool");
+    // 6 x 4 with dyadic values, so the averages are exact: red x/8 (mean 5/16), green y/4 (mean
+    // 3/8), blue 1 except the top-left pixel, 0 (mean 23/24).
+    const int w = 6, h = 4;
+    rt::image img(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            img.set(x, y, color(real(x) / 8, real(y) / 4, x == 0 && y == 0 ? 0 : 1));
+    rt::write_image(dir.file("a.pfm"), img);
+
+    const std::string out = dir.file("oiiotool.txt");
+    const std::string command =
+        "oiiotool --info --stats --dumpdata '" + dir.file("a.pfm") + "' > '" + out + "' 2>&1";
+    REQUIRE(std::system(command.c_str()) == 0);
+    std::string report = read_bytes(out);
+    INFO("oiiotool said:\n" << report);
+
+    std::smatch m;
+    REQUIRE(std::regex_search(report, m, std::regex(R"((\d+)\s*x\s*(\d+), 3 channel)")));
+    CHECK(std::stoi(m[1]) == w);
+    CHECK(std::stoi(m[2]) == h);
+    // oiiotool prints 6 decimals: 1e-6 is its rounding, not ours.
+    REQUIRE(std::regex_search(report, m, std::regex(R"(Stats Avg: (\S+) (\S+) (\S+))")));
+    CHECK(std::stod(m[1]) == Approx(5.0 / 16).margin(1e-6));
+    CHECK(std::stod(m[2]) == Approx(3.0 / 8).margin(1e-6));
+    CHECK(std::stod(m[3]) == Approx(23.0 / 24).margin(1e-6));
+    // Its pixel (0, 0) is the top left: the one pixel with blue 0, stored in the file's last row.
+    REQUIRE(std::regex_search(report, m, std::regex(R"(Pixel \(0, 0\): (\S+) (\S+) (\S+))")));
+    CHECK(std::stod(m[3]) == 0);
+    REQUIRE(std::regex_search(report, m, std::regex(R"(Pixel \(5, 3\): (\S+) (\S+) (\S+))")));
+    CHECK(std::stod(m[1]) == Approx(5.0 / 8).margin(1e-6));
+    CHECK(std::stod(m[2]) == Approx(3.0 / 4).margin(1e-6));
+}

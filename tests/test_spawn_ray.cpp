@@ -1,0 +1,289 @@
+// Tests for hit_record::spawn_ray (hittable.h): rays leaving a surface never hit it again by
+// mistake, at any scale (chapter 03). After pbrt-v4's robustness tests, which re-intersect
+// spawned rays over radii 1e-4..1e4 and expect zero self-hits.
+//
+// The strategy under test. A shape's hit() stores the hit point p already projected back onto
+// its surface, and p_error = 64 eps * (the scale of the coordinates), a bound on how far p can
+// still be from the true surface after rounding. spawn_ray moves the new ray's origin by p_error
+// along the normal, to the side the new direction leaves by (the side of dot(direction, normal)).
+// So an outgoing ray starts strictly outside a convex surface and moves away from it: it cannot
+// hit it again. A ray going in starts strictly inside: the root near p is behind it (t < 0), and
+// the only hit ahead is the far side of the sphere. No t > epsilon constant is involved, so the
+// same code works for a sphere of radius 1e-4 and one of 1e4, near the origin or 1e3 away.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <sstream>
+#include <string>
+
+#include "common/lambertian.h"
+#include "common/quad.h"
+#include "common/rng.h"
+#include "common/sampling.h"
+#include "common/sphere.h"
+
+namespace {
+
+using rt::point3, rt::real, rt::vec3;
+
+const rt::interval forward(0, rt::infinity);
+
+// Each draw in its own statement, so every compiler draws the same numbers in the same order.
+real uniform(rt::pcg32& rng, real lo, real hi) {
+    return lo + (hi - lo) * rng.uniform();
+}
+
+real log_uniform(rt::pcg32& rng, real lo_exponent, real hi_exponent) {
+    return std::pow(real(10), uniform(rng, lo_exponent, hi_exponent));
+}
+
+vec3 random_unit(rt::pcg32& rng) {
+    real u = rng.uniform();
+    return rt::sample_uniform_sphere({u, rng.uniform()});
+}
+
+vec3 random_in_cube(rt::pcg32& rng, real half_side) {
+    real x = uniform(rng, -half_side, half_side);
+    real y = uniform(rng, -half_side, half_side);
+    return vec3(x, y, uniform(rng, -half_side, half_side));
+}
+
+// A unit direction with dot(d, n) >= min_cos, uniform over that cap.
+vec3 random_in_hemisphere(rt::pcg32& rng, const vec3& n, real min_cos = 0) {
+    for (;;) {
+        vec3 d = random_unit(rng);
+        if (dot(d, n) < 0) d = -d;
+        if (dot(d, n) > min_cos) return d;
+    }
+}
+
+// A unit direction in the tangent plane of the unit normal n.
+vec3 random_tangent(rt::pcg32& rng, const vec3& n) {
+    for (;;) {
+        vec3 c = cross(n, random_unit(rng));
+        if (c.length() > real(0.1)) return rt::unit_vector(c);
+    }
+}
+
+// Counts of failures, and the first one in words for the failure message.
+struct tally {
+    long long cases    = 0;
+    long long failures = 0;
+    std::string first;
+
+    void fail(const std::string& what) {
+        if (failures++ == 0) first = what;
+    }
+};
+
+std::ostream& operator<<(std::ostream& out, const tally& t) {
+    out << t.failures << " of " << t.cases;
+    if (t.failures > 0) out << " (first: " << t.first << ")";
+    return out;
+}
+
+// The hard cases reach 1e6..1e7 radii and margins of 1e-6 radii, beyond float's 24 bits (its
+// ulp at 1e6 is 0.06): they test the double build, the default. A float build (RT_SCALAR=float)
+// says so instead of failing on arithmetic it cannot do.
+bool needs_double() {
+    if constexpr (std::numeric_limits<real>::digits >= 53) {
+        return false;
+    } else {
+        WARN("skipped: this hard case needs real = double");
+        return true;
+    }
+}
+
+}  // namespace
+
+TEST_CASE(
+    "spawn_ray: rays spawned from a sphere, radii 1e-4..1e4 and centers up to 1e3 away, "
+    "never re-hit it near t = 0",
+    "[hardcase][ch03]") {
+    if (needs_double()) return;
+    auto mat = std::make_shared<rt::lambertian>(rt::color(0.5, 0.5, 0.5));
+    rt::pcg32 rng(20240601, 1);
+    const int n_cases = 100000;
+
+    tally primary, outward, inward, tangent_out, tangent_in;
+    real worst_chord_error = 0;  // relative, over inward rays with cos >= 0.1
+    for (int i = 0; i < n_cases; ++i) {
+        const real radius = log_uniform(rng, -4, 4);
+        // Half the spheres sit up to 1e4 radii from the origin, half up to 1e3 in absolute terms
+        // (a 1e-4 sphere there is 1e7 radii out: the offset must follow the coordinates' scale).
+        const point3 center =
+            i % 2 == 0 ? random_in_cube(rng, real(1e4) * radius) : random_in_cube(rng, 1e3);
+        rt::sphere s(center, radius, mat);
+
+        // A ray from outside, from 0.01 to 100 radii off the surface, aimed at a surface point
+        // it can see (the angle to the normal below 87 degrees, so the aim is not lost to
+        // rounding), with a direction of random length.
+        vec3 n         = random_unit(rng);
+        point3 aim     = center + radius * n;
+        real away      = radius * log_uniform(rng, -2, 2);
+        point3 origin  = aim + away * random_in_hemisphere(rng, n, real(0.05));
+        vec3 direction = log_uniform(rng, -3, 3) * (aim - origin);
+        rt::hit_record rec;
+        ++primary.cases;
+        if (!s.hit(rt::ray(origin, direction), forward, rec) || !rec.front_face) {
+            primary.fail("radius " + std::to_string(radius));
+            continue;
+        }
+
+        auto where = [&] {  // the case in words, built only for a failure
+            std::ostringstream text;
+            text.precision(17);
+            text << "radius " << radius << ", center " << center << ", p " << rec.p << ", normal "
+                 << rec.normal << ", p_error " << rec.p_error;
+            return text.str();
+        };
+        const real scale = log_uniform(rng, -3, 3);  // spawned directions need not be unit
+        rt::hit_record again;
+
+        // Out: convex, so never again.
+        vec3 out = scale * random_in_hemisphere(rng, rec.normal);
+        ++outward.cases;
+        if (s.hit(rec.spawn_ray(out, 0), forward, again))
+            outward.fail(where() + ": re-hit at t " + std::to_string(again.t));
+
+        // In: only the far side, at the chord's length 2 r cos(theta). Its error budget is the
+        // origin's offset p_error into the sphere, p's own distance from the surface and the
+        // rounding of the far hit (each below p_error), every one of them lengthening or
+        // shortening the path by (its size) / cos(theta): tolerance 3 p_error / cos. Relative to
+        // the chord that is 1.5 p_error / (r cos^2): 2e-8 for a sphere 1e4 radii out seen at
+        // cos = 0.1, but 2e-5 for one 1e7 radii out; no one relative bound like 1e-6 fits both.
+        // The 1e-9 relative term covers the rounding of the chord itself.
+        vec3 in        = scale * random_in_hemisphere(rng, -rec.normal);
+        real cos_theta = -dot(rt::unit_vector(in), rec.normal);
+        real chord     = 2 * radius * cos_theta;
+        real tolerance = real(1e-9) * chord + 3 * rec.p_error / cos_theta;
+        ++inward.cases;
+        if (!s.hit(rec.spawn_ray(in, 0), forward, again)) {
+            inward.fail(where() + ": went in and never came out");
+        } else {
+            real travelled = again.t * in.length();
+            // Once the tolerance is below half the chord, a hit at t ~ 0 cannot pass: ask for it
+            // explicitly too, so the intent does not hide in the tolerance.
+            bool near_zero = tolerance < chord / 2 && travelled < chord / 2;
+            if (std::fabs(travelled - chord) > tolerance || near_zero || again.front_face) {
+                std::ostringstream what;
+                what.precision(17);
+                what << where() << ", cos " << cos_theta << ": hit at " << travelled << ", chord "
+                     << chord;
+                inward.fail(what.str());
+            }
+            if (cos_theta >= real(0.1) && i % 2 == 0)
+                worst_chord_error = std::fmax(worst_chord_error, std::fabs(travelled / chord - 1));
+        }
+
+        // Along the tangent plane: the sign of dot(direction, normal), a few ulps either way,
+        // picks the side. Outside, the ray moves away and misses. Inside at depth ~p_error, it
+        // crosses the thin cap to the surface sqrt(2 r p_error) ahead (the half chord at that
+        // depth); the depth and the discriminant are each known to some percent, so [0.5, 2]
+        // times that is a safe band, and a self-hit near t = 0 falls far below it.
+        vec3 along = scale * random_tangent(rng, rec.normal);
+        if (dot(along, rec.normal) > 0) {
+            ++tangent_out.cases;
+            if (s.hit(rec.spawn_ray(along, 0), forward, again))
+                tangent_out.fail(where() + ": tangent ray re-hit");
+        } else {
+            ++tangent_in.cases;
+            real half_chord = std::sqrt(2 * radius * rec.p_error);
+            if (!s.hit(rec.spawn_ray(along, 0), forward, again)) {
+                tangent_in.fail(where() + ": tangent ray went in and never came out");
+            } else {
+                real ratio = again.t * along.length() / half_chord;
+                if (!(ratio >= real(0.5) && ratio <= 2))
+                    tangent_in.fail(where() + ": tangent ray hit at " + std::to_string(ratio) +
+                                    " of the half chord");
+            }
+        }
+    }
+
+    INFO("primary rays that missed or hit from inside: " << primary);
+    INFO("outward spawned rays that hit the sphere again: " << outward);
+    INFO("inward spawned rays not hitting the far side at the chord: " << inward);
+    INFO("tangent rays on the outside that hit: " << tangent_out);
+    INFO("tangent rays on the inside not crossing the cap: " << tangent_in);
+    INFO("worst relative chord error, cos >= 0.1, centers up to 1e4 radii: " << worst_chord_error);
+    CHECK(primary.failures == 0);
+    CHECK(outward.failures == 0);
+    CHECK(inward.failures == 0);
+    CHECK(tangent_out.failures == 0);
+    CHECK(tangent_in.failures == 0);
+    // Both sides of the tangent plane were exercised, so the two checks above were not empty.
+    CHECK(tangent_out.cases > n_cases / 10);
+    CHECK(tangent_in.cases > n_cases / 10);
+    // For spheres near the origin in their own units, the offset changes the chord by at most
+    // 1.5 * 64 eps (1 + 1e4) / 0.01 = 2e-8 relative: 1e-6 holds with a wide margin.
+    CHECK(worst_chord_error < real(1e-6));
+}
+
+TEST_CASE(
+    "spawn_ray: rays spawned from a quad, edges 1e-4..1e4 and corners up to 1e3 away, "
+    "never re-hit it",
+    "[hardcase][ch03]") {
+    if (needs_double()) return;
+    auto mat = std::make_shared<rt::lambertian>(rt::color(0.5, 0.5, 0.5));
+    rt::pcg32 rng(20240602, 2);
+    const int n_cases = 100000;
+
+    // A plane is crossed once: a ray leaving the quad on either side, or along it, starts
+    // p_error off the plane on the side it moves to, and so can never reach the quad again.
+    tally primary, same_side, through, along_plane;
+    for (int i = 0; i < n_cases; ++i) {
+        const real size = log_uniform(rng, -4, 4);
+        const point3 corner =
+            i % 2 == 0 ? random_in_cube(rng, real(1e4) * size) : random_in_cube(rng, 1e3);
+        vec3 u_dir = random_unit(rng);
+        vec3 v_dir = random_unit(rng);
+        while (cross(u_dir, v_dir).length() < real(0.2)) v_dir = random_unit(rng);
+        vec3 u = size * uniform(rng, real(0.5), 2) * u_dir;
+        vec3 v = size * uniform(rng, real(0.5), 2) * v_dir;
+        rt::quad q(corner, u, v, mat);
+        vec3 n = rt::unit_vector(cross(u, v));
+
+        // A ray from either side, aimed at a point at least 1% of an edge inside the quad.
+        real a        = uniform(rng, real(0.01), real(0.99));
+        real b        = uniform(rng, real(0.01), real(0.99));
+        point3 aim    = corner + a * u + b * v;
+        vec3 from     = random_in_hemisphere(rng, rng.uniform() < 0.5 ? n : -n, real(0.05));
+        point3 origin = aim + size * log_uniform(rng, -2, 2) * from;
+        rt::hit_record rec;
+        ++primary.cases;
+        if (!q.hit(rt::ray(origin, log_uniform(rng, -3, 3) * (aim - origin)), forward, rec)) {
+            primary.fail("size " + std::to_string(size));
+            continue;
+        }
+
+        auto where = [&] {
+            std::ostringstream text;
+            text.precision(17);
+            text << "size " << size << ", corner " << corner << ", p " << rec.p << ", normal "
+                 << rec.normal << ", p_error " << rec.p_error;
+            return text.str();
+        };
+        const real scale = log_uniform(rng, -3, 3);
+        rt::hit_record again;
+
+        ++same_side.cases;
+        if (q.hit(rec.spawn_ray(scale * random_in_hemisphere(rng, rec.normal), 0), forward, again))
+            same_side.fail(where() + ": re-hit at t " + std::to_string(again.t));
+        ++through.cases;
+        if (q.hit(rec.spawn_ray(scale * random_in_hemisphere(rng, -rec.normal), 0), forward, again))
+            through.fail(where() + ": re-hit at t " + std::to_string(again.t));
+        ++along_plane.cases;
+        if (q.hit(rec.spawn_ray(scale * random_tangent(rng, rec.normal), 0), forward, again))
+            along_plane.fail(where() + ": re-hit at t " + std::to_string(again.t));
+    }
+
+    INFO("primary rays that missed: " << primary);
+    INFO("spawned rays back to the side they came from that hit the quad again: " << same_side);
+    INFO("spawned rays through to the other side that hit the quad again: " << through);
+    INFO("spawned rays along the plane that hit the quad again: " << along_plane);
+    CHECK(primary.failures == 0);
+    CHECK(same_side.failures == 0);
+    CHECK(through.failures == 0);
+    CHECK(along_plane.failures == 0);
+}
