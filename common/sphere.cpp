@@ -1,6 +1,7 @@
 #include "sphere.h"
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "error.h"
@@ -24,18 +25,28 @@ bool sphere::hit(const ray& r, interval ray_t, hit_record& rec) const {
     real a        = dot(d, d);
     real b        = dot(f, d);
     real c        = dot(f, f) - radius_ * radius_;
-    // Origin outside (c > 0) and moving away (b > 0): both roots are negative. Most spheres of a
-    // big list are behind the ray, so this cheap test pays for itself.
-    if (c > 0 && b > 0 && ray_t.min >= 0) return false;
 
-    // b^2 - a c = a (r^2 - |f_perp|^2), where f_perp is f minus its part along the ray: computing
-    // it this way avoids subtracting two huge, nearly equal numbers for distant spheres.
-    vec3 f_perp         = f - (b / a) * d;
-    real discriminant   = radius_ * radius_ - dot(f_perp, f_perp);
-    if (discriminant < 0) return false;
+    // Most spheres of a big list are clearly missed. The textbook discriminant b^2 - a c says so
+    // cheaply, but it cancels badly (distant or grazing spheres); trust its "miss" only when it
+    // is below minus its own rounding-error bound.
+    real bb = b * b, ac = a * c;
+    if (bb - ac < -8 * std::numeric_limits<real>::epsilon() * (bb + std::fabs(ac))) return false;
 
+    // b^2 - a c = a (r^2 - |f_perp|^2), where f_perp = f - (b/a) d is f minus its part along the
+    // ray: this form avoids subtracting two huge, nearly equal numbers. Scaled by a^2
+    // (g = a f_perp) so that it needs no division.
+    vec3 g               = a * f - b * d;
+    real a2_discriminant = radius_ * radius_ * a * a - dot(g, g);
+    if (a2_discriminant < 0) return false;
+    return record_hit(r, ray_t, rec, a, b, c, a2_discriminant);
+}
+
+// The rarer half of hit(), kept out of line so the common miss stays a short function.
+bool sphere::record_hit(const ray& r, interval ray_t, hit_record& rec, real a, real b, real c,
+                        real a2_discriminant) const {
     // Stable roots: q never cancels, since b and sign(b) sqrt(...) add with the same sign.
-    real q     = -(b + std::copysign(std::sqrt(a * discriminant), b));
+    // sqrt(b^2 - a c) = sqrt(a * discriminant) = sqrt(a2_discriminant / a).
+    real q     = -(b + std::copysign(std::sqrt(a2_discriminant / a), b));
     real t_far = q / a;
     // q = 0 only for a ray that starts on the sphere and grazes it: both roots are then 0.
     real t_near = q != 0 ? c / q : t_far;
@@ -50,10 +61,10 @@ bool sphere::hit(const ray& r, interval ray_t, hit_record& rec) const {
     rec.t = root;
     // Project the point back onto the sphere: p then lies within a few ulps of the surface
     // whatever the distance travelled, which keeps the spawn offset small.
-    vec3 from_center     = r.at(root) - center_;
-    vec3 outward_normal  = from_center / from_center.length();
-    rec.p                = center_ + radius_ * outward_normal;
-    rec.p_error          = spawn_offset_scale * (max_abs_component(center_) + radius_);
+    vec3 from_center    = r.at(root) - center_;
+    vec3 outward_normal = from_center / from_center.length();
+    rec.p               = center_ + radius_ * outward_normal;
+    rec.p_error         = spawn_offset_scale * (max_abs_component(center_) + radius_);
     rec.set_face_normal(r, outward_normal);
     rec.mat = mat.get();
     return true;

@@ -22,6 +22,9 @@ public:
     real radius() const { return radius_; }
 
 private:
+    [[gnu::noinline]] bool record_hit(const ray& r, interval ray_t, hit_record& rec, real a,
+                                      real b, real c, real a2_discriminant) const;
+
     point3 center_;
     real radius_;
     std::shared_ptr<material> mat;
