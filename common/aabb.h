@@ -11,7 +11,7 @@
 namespace rt {
 
 class aabb {
-public:
+  public:
     interval x, y, z;  // empty by default: a box around nothing
 
     aabb() = default;
@@ -54,8 +54,8 @@ public:
     bool hit(const point3& origin, const vec3& inv_dir, interval ray_t) const {
         for (int axis = 0; axis < 3; ++axis) {
             const interval& ax = axis_interval(axis);
-            real t0 = (ax.min - origin[axis]) * inv_dir[axis];
-            real t1 = (ax.max - origin[axis]) * inv_dir[axis];
+            real t0            = (ax.min - origin[axis]) * inv_dir[axis];
+            real t1            = (ax.max - origin[axis]) * inv_dir[axis];
             if (t0 > t1) std::swap(t0, t1);
             if (t0 > ray_t.min) ray_t.min = t0;
             if (t1 < ray_t.max) ray_t.max = t1;
@@ -64,7 +64,7 @@ public:
         return true;
     }
 
-private:
+  private:
     // A flat box (a quad in a coordinate plane) still needs some thickness so the slab test
     // does not divide a zero width; widen any axis thinner than delta around its middle.
     void pad_to_minimums() {

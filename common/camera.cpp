@@ -43,13 +43,13 @@ void camera::initialize() {
     height = std::max(1, int(double(image_width) / aspect_ratio));
     center = lookfrom;
 
-    real focus      = focus_dist > 0 ? focus_dist : view.length();
-    real vp_height  = 2 * std::tan(degrees_to_radians(vfov) / 2) * focus;
-    real vp_width   = vp_height * (real(image_width) / real(height));
-    vec3 viewport_u = vp_width * u;    // across the top edge, left to right
-    vec3 viewport_v = -vp_height * v;  // down the left edge
-    pixel_du        = viewport_u / real(image_width);
-    pixel_dv        = viewport_v / real(height);
+    real focus        = focus_dist > 0 ? focus_dist : view.length();
+    real vp_height    = 2 * std::tan(degrees_to_radians(vfov) / 2) * focus;
+    real vp_width     = vp_height * (real(image_width) / real(height));
+    vec3 viewport_u   = vp_width * u;    // across the top edge, left to right
+    vec3 viewport_v   = -vp_height * v;  // down the left edge
+    pixel_du          = viewport_u / real(image_width);
+    pixel_dv          = viewport_v / real(height);
     point3 upper_left = center - focus * w - viewport_u / 2 - viewport_v / 2;
     pixel00           = upper_left + real(0.5) * (pixel_du + pixel_dv);
 

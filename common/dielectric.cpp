@@ -23,8 +23,8 @@ bool dielectric::scatter(const ray& r_in, const hit_record& rec, sampler& s, col
     vec3 unit_dir  = unit_vector(r_in.direction());
     real cos_theta = std::min(dot(-unit_dir, rec.normal), real(1));
 
-    bool reflects = total_internal_reflection(cos_theta, eta) ||
-                    schlick_reflectance(cos_theta, eta) > choice;
+    bool reflects =
+        total_internal_reflection(cos_theta, eta) || schlick_reflectance(cos_theta, eta) > choice;
     vec3 direction = reflects ? reflect(unit_dir, rec.normal) : refract(unit_dir, rec.normal, eta);
 
     scattered   = rec.spawn_ray(direction, r_in.time());

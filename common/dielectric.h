@@ -10,7 +10,7 @@
 namespace rt {
 
 class dielectric : public material {
-public:
+  public:
     // ior: refractive index relative to the surrounding medium. Throws user_error unless > 0.
     explicit dielectric(real ior);
 
@@ -18,7 +18,7 @@ public:
     bool scatter(const ray& r_in, const hit_record& rec, sampler& s, color& attenuation,
                  ray& scattered) const override;
 
-private:
+  private:
     real ior;
 };
 

@@ -8,7 +8,7 @@
 namespace rt {
 
 class user_error : public std::runtime_error {
-public:
+  public:
     explicit user_error(const std::string& message) : std::runtime_error(message) {}
 };
 

@@ -19,11 +19,11 @@ inline constexpr real spawn_offset_scale = 64 * std::numeric_limits<real>::epsil
 
 struct hit_record {
     point3 p;
-    vec3 normal;                     // unit, facing against the incoming ray
-    const material* mat = nullptr;   // owned by the scene, never null for a hit
+    vec3 normal;                    // unit, facing against the incoming ray
+    const material* mat = nullptr;  // owned by the scene, never null for a hit
     real t              = 0;
-    real p_error        = 0;         // bound on the distance of p from the true surface
-    bool front_face     = true;      // the ray arrived from the outside
+    real p_error        = 0;     // bound on the distance of p from the true surface
+    bool front_face     = true;  // the ray arrived from the outside
 
     // outward_normal must be unit length.
     void set_face_normal(const ray& r, const vec3& outward_normal) {
@@ -42,7 +42,7 @@ struct hit_record {
 };
 
 class hittable {
-public:
+  public:
     virtual ~hittable() = default;
 
     // Finds the nearest hit with t inside ray_t. On a hit, fills rec completely and returns true;

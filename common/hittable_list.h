@@ -9,7 +9,7 @@
 namespace rt {
 
 class hittable_list : public hittable {
-public:
+  public:
     std::vector<std::shared_ptr<hittable>> objects;
 
     hittable_list() = default;

@@ -9,7 +9,7 @@
 namespace rt {
 
 class image {
-public:
+  public:
     image() = default;
     image(int width, int height)
         : w(width), h(height), pixels(std::size_t(width) * std::size_t(height) * 3, 0.0f) {}
@@ -31,7 +31,7 @@ public:
     // Interleaved RGB, row by row from the top.
     const std::vector<float>& data() const { return pixels; }
 
-private:
+  private:
     std::size_t index(int x, int y) const { return (std::size_t(y) * std::size_t(w) + x) * 3; }
 
     int w = 0, h = 0;

@@ -1,5 +1,6 @@
 #include "image_io.h"
 
+#include <stb/stb_image_write.h>
 #include <unistd.h>
 
 #include <bit>
@@ -12,8 +13,6 @@
 #include <sstream>
 #include <vector>
 
-#include <stb/stb_image_write.h>
-
 #include "display_encoding.h"
 #include "error.h"
 
@@ -23,10 +22,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string extension_of(const std::string& path) { return fs::path(path).extension().string(); }
+std::string extension_of(const std::string& path) {
+    return fs::path(path).extension().string();
+}
 
 // Runs write(tmp) on a temporary path in the target's folder, then renames it onto `path`.
-void write_atomically(const std::string& path, const std::function<bool(const std::string&)>& write) {
+void write_atomically(const std::string& path,
+                      const std::function<bool(const std::string&)>& write) {
     std::string tmp = path + ".tmp." + std::to_string(::getpid());
     if (!write(tmp)) {
         std::remove(tmp.c_str());
@@ -111,8 +113,9 @@ image read_pfm(const std::string& path) {
             }
         }
         for (int x = 0; x < width; ++x)
-            img.set(x, y, color(row[std::size_t(x) * 3], row[std::size_t(x) * 3 + 1],
-                                row[std::size_t(x) * 3 + 2]));
+            img.set(x, y,
+                    color(row[std::size_t(x) * 3], row[std::size_t(x) * 3 + 1],
+                          row[std::size_t(x) * 3 + 2]));
     }
     return img;
 }

@@ -7,7 +7,7 @@
 namespace rt {
 
 class interval {
-public:
+  public:
     real min = +infinity;  // empty by default
     real max = -infinity;
 

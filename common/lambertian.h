@@ -7,14 +7,14 @@
 namespace rt {
 
 class lambertian : public material {
-public:
+  public:
     // Throws user_error unless every channel of albedo is in [0, 1] (more would create energy).
     explicit lambertian(const color& albedo);
 
     bool scatter(const ray& r_in, const hit_record& rec, sampler& s, color& attenuation,
                  ray& scattered) const override;
 
-private:
+  private:
     color albedo;
 };
 

@@ -9,7 +9,7 @@
 namespace rt {
 
 class material {
-public:
+  public:
     virtual ~material() = default;
 
     // Radiance emitted at the hit towards the ray's origin. Most materials emit nothing.

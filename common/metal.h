@@ -8,7 +8,7 @@
 namespace rt {
 
 class metal : public material {
-public:
+  public:
     // Throws user_error unless albedo is in [0, 1] per channel and fuzz in [0, 1] (0 = mirror).
     metal(const color& albedo, real fuzz);
 
@@ -16,7 +16,7 @@ public:
     bool scatter(const ray& r_in, const hit_record& rec, sampler& s, color& attenuation,
                  ray& scattered) const override;
 
-private:
+  private:
     color albedo;
     real fuzz;
 };

@@ -7,7 +7,7 @@
 namespace rt {
 
 class normal_shading : public material {
-public:
+  public:
     color emitted(const ray& /*r_in*/, const hit_record& rec) const override {
         vec3 outward = rec.front_face ? rec.normal : -rec.normal;
         return real(0.5) * (outward + color(1, 1, 1));

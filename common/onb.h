@@ -10,7 +10,7 @@
 namespace rt {
 
 class onb {
-public:
+  public:
     // n must be a unit vector; it becomes the basis' w (local +z) axis.
     explicit onb(const vec3& n) : axis{vec3(), vec3(), n} {
         real sign = std::copysign(real(1), n.z());
@@ -28,7 +28,7 @@ public:
         return local.x() * axis[0] + local.y() * axis[1] + local.z() * axis[2];
     }
 
-private:
+  private:
     vec3 axis[3];
 };
 

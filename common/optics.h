@@ -9,7 +9,9 @@
 namespace rt {
 
 // Mirror reflection of v about the unit normal n: r = v - 2 (v.n) n. |r| = |v|.
-constexpr vec3 reflect(const vec3& v, const vec3& n) { return v - 2 * dot(v, n) * n; }
+constexpr vec3 reflect(const vec3& v, const vec3& n) {
+    return v - 2 * dot(v, n) * n;
+}
 
 // Snell's law for a unit direction uv arriving against the unit normal n (dot(uv, n) <= 0),
 // eta = n_incident / n_transmitted. The tangential part scales by eta; the normal part makes the

@@ -1,9 +1,9 @@
 #include "options.h"
 
+#include <omp.h>
+
 #include <cstdio>
 #include <exception>
-
-#include <omp.h>
 
 #include "error.h"
 #include "image_io.h"
@@ -25,8 +25,7 @@ CLI::Validator output_file(const std::vector<std::string>& extensions) {
         "FILE");
 }
 
-void print_summary(const std::string& name, const chapter_settings& s, int height,
-                   double seconds) {
+void print_summary(const std::string& name, const chapter_settings& s, int height, double seconds) {
     const auto& r  = s.render;
     double samples = double(s.width) * height * r.samples_per_pixel;
     int threads    = r.threads > 0 ? r.threads : omp_get_num_procs();

@@ -4,12 +4,11 @@
 // A chapter may add flags of its own through app() before it runs. Chapter 01.
 #pragma once
 
+#include <CLI/CLI.hpp>
 #include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
-
-#include <CLI/CLI.hpp>
 
 #include "render.h"
 #include "scene.h"
@@ -25,7 +24,7 @@ struct chapter_settings {
 };
 
 class command_line {
-public:
+  public:
     command_line(std::string program_name, chapter_settings defaults);
 
     CLI::App& app() { return cli; }
@@ -40,7 +39,7 @@ public:
     // exit code: 0 on success (or --help), 2 for a user error with one line on stderr naming it.
     int run(int argc, char** argv, const std::function<scene()>& build_scene);
 
-private:
+  private:
     std::string program;
     chapter_settings current;
     CLI::App cli;

@@ -32,9 +32,8 @@ void progress_meter::row_done() {
     double seconds = elapsed_seconds();
     double rate    = done * samples_per_row / seconds;
     double left    = seconds * (total_rows - done) / done;
-    std::fprintf(stderr, "%s%5.1f%% | %8.3f M samples/s | %6.1f s left%s",
-                 interactive ? "\r" : "", 100.0 * done / total_rows, rate * 1e-6, left,
-                 interactive ? "" : "\n");
+    std::fprintf(stderr, "%s%5.1f%% | %8.3f M samples/s | %6.1f s left%s", interactive ? "\r" : "",
+                 100.0 * done / total_rows, rate * 1e-6, left, interactive ? "" : "\n");
     std::fflush(stderr);
 }
 

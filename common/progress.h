@@ -9,15 +9,15 @@
 namespace rt {
 
 class progress_meter {
-public:
+  public:
     // total_rows rows of samples_per_row camera samples each; silent when quiet.
     progress_meter(int total_rows, double samples_per_row, bool quiet);
 
-    void row_done();   // thread-safe
-    void finish();     // clears the progress line
+    void row_done();  // thread-safe
+    void finish();    // clears the progress line
     double elapsed_seconds() const;
 
-private:
+  private:
     using clock = std::chrono::steady_clock;
 
     int total_rows;

@@ -32,10 +32,10 @@ bool quad::hit(const ray& r, interval ray_t, hit_record& rec) const {
     real t = (D - dot(normal, r.origin())) / denom;
     if (!ray_t.surrounds(t) || !std::isfinite(t)) return false;
 
-    point3 p        = r.at(t);
-    vec3 planar     = p - Q;
-    real alpha      = dot(w, cross(planar, v));
-    real beta       = dot(w, cross(u, planar));
+    point3 p    = r.at(t);
+    vec3 planar = p - Q;
+    real alpha  = dot(w, cross(planar, v));
+    real beta   = dot(w, cross(u, planar));
     if (!(alpha >= 0 && alpha <= 1 && beta >= 0 && beta <= 1)) return false;
 
     rec.t = t;

@@ -12,18 +12,18 @@
 namespace rt {
 
 class quad : public hittable {
-public:
+  public:
     // Throws user_error when u and v span no area (zero, or parallel).
     quad(const point3& Q, const vec3& u, const vec3& v, std::shared_ptr<material> mat);
 
     bool hit(const ray& r, interval ray_t, hit_record& rec) const override;
 
-private:
+  private:
     point3 Q;
     vec3 u, v;
-    vec3 w;        // (u x v) / |u x v|^2, for the plane coordinates of a hit
-    vec3 normal;   // unit(u x v)
-    real D;        // plane offset: n.P = D
+    vec3 w;       // (u x v) / |u x v|^2, for the plane coordinates of a hit
+    vec3 normal;  // unit(u x v)
+    real D;       // plane offset: n.P = D
     std::shared_ptr<material> mat;
 };
 

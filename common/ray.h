@@ -6,7 +6,7 @@
 namespace rt {
 
 class ray {
-public:
+  public:
     ray() = default;
     ray(const point3& origin, const vec3& direction, real time = 0)
         : orig(origin), dir(direction), tm(time) {}
@@ -17,7 +17,7 @@ public:
 
     point3 at(real t) const { return orig + t * dir; }
 
-private:
+  private:
     point3 orig;
     vec3 dir;
     real tm = 0;

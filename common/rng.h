@@ -10,7 +10,7 @@
 namespace rt {
 
 class pcg32 {
-public:
+  public:
     pcg32() = default;
     pcg32(std::uint64_t sequence, std::uint64_t seed) { set_sequence(sequence, seed); }
 
@@ -35,7 +35,7 @@ public:
     // float cannot hold 1 - 2^-32 and would round up to 1.
     real uniform() {
         constexpr real one_minus_epsilon = real(1) - std::numeric_limits<real>::epsilon() / 2;
-        real u = real(next_u32()) * real(0x1p-32);
+        real u                           = real(next_u32()) * real(0x1p-32);
         return u < one_minus_epsilon ? u : one_minus_epsilon;
     }
 
@@ -56,10 +56,10 @@ public:
         state = acc_mult * state + acc_plus;
     }
 
-private:
+  private:
     static constexpr std::uint64_t multiplier = 0x5851f42d4c957f2dULL;
-    std::uint64_t state = 0x853c49e6748fea9bULL;
-    std::uint64_t inc   = 0xda3e39cb94b95bdbULL;
+    std::uint64_t state                       = 0x853c49e6748fea9bULL;
+    std::uint64_t inc                         = 0xda3e39cb94b95bdbULL;
 };
 
 // Mixes 64 bits so that nearby inputs give unrelated outputs (the splitmix64 finalizer).

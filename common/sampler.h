@@ -20,7 +20,7 @@ struct sample2 {
 };
 
 class sampler {
-public:
+  public:
     static constexpr std::uint64_t dimensions_per_sample = 65536;
 
     explicit sampler(std::uint64_t render_seed) : seed(render_seed) {}
@@ -37,7 +37,7 @@ public:
         return {u, rng.uniform()};
     }
 
-private:
+  private:
     std::uint64_t seed;
     pcg32 rng;
 };

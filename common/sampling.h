@@ -27,7 +27,9 @@ inline vec3 sample_uniform_disk(sample2 s) {
     }
     return vec3(r * std::cos(theta), r * std::sin(theta), 0);
 }
-constexpr real uniform_disk_pdf() { return 1 / pi; }
+constexpr real uniform_disk_pdf() {
+    return 1 / pi;
+}
 
 // Uniform direction on the unit sphere: z uniform in [-1,1] (Archimedes), azimuth uniform.
 inline vec3 sample_uniform_sphere(sample2 s) {
@@ -36,12 +38,18 @@ inline vec3 sample_uniform_sphere(sample2 s) {
     real phi = 2 * pi * s.v;
     return vec3(r * std::cos(phi), r * std::sin(phi), z);
 }
-constexpr real uniform_sphere_pdf() { return 1 / (4 * pi); }
+constexpr real uniform_sphere_pdf() {
+    return 1 / (4 * pi);
+}
 
 // Uniform point inside the unit ball: a uniform direction scaled by cbrt(w), since the volume
 // within radius r grows as r^3.
-inline vec3 sample_uniform_ball(sample2 s, real w) { return std::cbrt(w) * sample_uniform_sphere(s); }
-constexpr real uniform_ball_pdf() { return 3 / (4 * pi); }
+inline vec3 sample_uniform_ball(sample2 s, real w) {
+    return std::cbrt(w) * sample_uniform_sphere(s);
+}
+constexpr real uniform_ball_pdf() {
+    return 3 / (4 * pi);
+}
 
 // Cosine-weighted direction about +z (Malley's method: a uniform disk point lifted to the
 // hemisphere). pdf = cos(theta) / pi, the distribution of an ideal diffuse reflector.
@@ -50,6 +58,8 @@ inline vec3 sample_cosine_hemisphere(sample2 s) {
     real z = std::sqrt(std::max(real(0), 1 - d.x() * d.x() - d.y() * d.y()));
     return vec3(d.x(), d.y(), z);
 }
-inline real cosine_hemisphere_pdf(real cos_theta) { return std::max(real(0), cos_theta) / pi; }
+inline real cosine_hemisphere_pdf(real cos_theta) {
+    return std::max(real(0), cos_theta) / pi;
+}
 
 }  // namespace rt

@@ -15,6 +15,8 @@ using real = double;
 inline constexpr real infinity = std::numeric_limits<real>::infinity();
 inline constexpr real pi       = real(3.14159265358979323846);
 
-inline constexpr real degrees_to_radians(real degrees) { return degrees * pi / real(180); }
+inline constexpr real degrees_to_radians(real degrees) {
+    return degrees * pi / real(180);
+}
 
 }  // namespace rt

@@ -11,7 +11,7 @@
 namespace rt {
 
 class sphere : public hittable {
-public:
+  public:
     // Throws user_error unless radius is positive and finite (no negative-radius tricks: a
     // hollow glass sphere is an inner sphere with an index ratio below 1).
     sphere(const point3& center, real radius, std::shared_ptr<material> mat);
@@ -21,9 +21,9 @@ public:
     const point3& center() const { return center_; }
     real radius() const { return radius_; }
 
-private:
-    [[gnu::noinline]] bool record_hit(const ray& r, interval ray_t, hit_record& rec, real a,
-                                      real b, real c, real a2_discriminant) const;
+  private:
+    [[gnu::noinline]] bool record_hit(const ray& r, interval ray_t, hit_record& rec, real a, real b,
+                                      real c, real a2_discriminant) const;
 
     point3 center_;
     real radius_;

@@ -10,7 +10,7 @@
 namespace rt {
 
 class vec3 {
-public:
+  public:
     real e[3];
 
     constexpr vec3() : e{0, 0, 0} {}
@@ -64,9 +64,15 @@ constexpr vec3 operator-(const vec3& u, const vec3& v) {
 constexpr vec3 operator*(const vec3& u, const vec3& v) {
     return vec3(u.e[0] * v.e[0], u.e[1] * v.e[1], u.e[2] * v.e[2]);
 }
-constexpr vec3 operator*(real t, const vec3& v) { return vec3(t * v.e[0], t * v.e[1], t * v.e[2]); }
-constexpr vec3 operator*(const vec3& v, real t) { return t * v; }
-constexpr vec3 operator/(const vec3& v, real t) { return (1 / t) * v; }
+constexpr vec3 operator*(real t, const vec3& v) {
+    return vec3(t * v.e[0], t * v.e[1], t * v.e[2]);
+}
+constexpr vec3 operator*(const vec3& v, real t) {
+    return t * v;
+}
+constexpr vec3 operator/(const vec3& v, real t) {
+    return (1 / t) * v;
+}
 
 constexpr real dot(const vec3& u, const vec3& v) {
     return u.e[0] * v.e[0] + u.e[1] * v.e[1] + u.e[2] * v.e[2];
@@ -75,7 +81,9 @@ constexpr vec3 cross(const vec3& u, const vec3& v) {
     return vec3(u.e[1] * v.e[2] - u.e[2] * v.e[1], u.e[2] * v.e[0] - u.e[0] * v.e[2],
                 u.e[0] * v.e[1] - u.e[1] * v.e[0]);
 }
-inline vec3 unit_vector(const vec3& v) { return v / v.length(); }
+inline vec3 unit_vector(const vec3& v) {
+    return v / v.length();
+}
 
 // The largest absolute component: the scale that floating-point error in a point grows with.
 inline real max_abs_component(const vec3& v) {

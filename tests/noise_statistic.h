@@ -27,10 +27,10 @@
 namespace rt_test {
 
 struct noise_comparison {
-    int blocks = 0;          // number of (block, channel) tests
-    int failed = 0;          // how many exceeded z_limit
-    double z_limit = 0;      // the Bonferroni bound used
-    double worst_z = 0;      // the largest |z| seen
+    int blocks     = 0;                               // number of (block, channel) tests
+    int failed     = 0;                               // how many exceeded z_limit
+    double z_limit = 0;                               // the Bonferroni bound used
+    double worst_z = 0;                               // the largest |z| seen
     int worst_x = 0, worst_y = 0, worst_channel = 0;  // where (block origin in pixels)
     bool passed() const { return failed == 0; }
 };
@@ -39,7 +39,7 @@ struct noise_comparison {
 inline double two_sided_normal_quantile(double p) {
     double lo = 0, hi = 40;
     for (int i = 0; i < 200; ++i) {
-        double mid = (lo + hi) / 2;
+        double mid                                      = (lo + hi) / 2;
         (std::erfc(mid / std::sqrt(2.0)) > p ? lo : hi) = mid;
     }
     return (lo + hi) / 2;
@@ -73,9 +73,9 @@ inline noise_comparison compare_within_noise(const rt::image& test, const rt::im
                                    : (std::fabs(diff) <= 1e-6 * n ? 0.0 : INFINITY);
                 if (std::fabs(z) > result.z_limit) ++result.failed;
                 if (std::fabs(z) > std::fabs(result.worst_z)) {
-                    result.worst_z = z;
-                    result.worst_x = x0;
-                    result.worst_y = y0;
+                    result.worst_z       = z;
+                    result.worst_x       = x0;
+                    result.worst_y       = y0;
                     result.worst_channel = c;
                 }
             }

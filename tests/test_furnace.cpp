@@ -44,8 +44,8 @@ furnace_result run_furnace(rt::hittable_list world, int max_depth = 50) {
                 s.start_pixel_sample(i, j, k);
                 rt::ray r = sc.cam.get_ray(i, j, s);
                 rt::hit_record rec;
-                bool on   = sc.world.hit(r, rt::interval(0, rt::infinity), rec);
-                color L   = rt::trace_path(sc, r, s, max_depth);
+                bool on = sc.world.hit(r, rt::interval(0, rt::infinity), rec);
+                color L = rt::trace_path(sc, r, s, max_depth);
                 if (!std::isfinite(L.x()) || !std::isfinite(L.y()) || !std::isfinite(L.z()))
                     ++result.non_finite;
                 (on ? result.on_object : result.off_object).add(double(L.x()));
@@ -92,8 +92,8 @@ TEST_CASE("furnace: a glass sphere neither loses nor gains energy", "[ch05]") {
 TEST_CASE("furnace: a glass sphere with an air bubble (total internal reflection) gives 1",
           "[ch05][hardcase]") {
     rt::hittable_list world;
-    world.add(std::make_shared<rt::sphere>(point3(0, 0, 0), 1,
-                                           std::make_shared<rt::dielectric>(1.5)));
+    world.add(
+        std::make_shared<rt::sphere>(point3(0, 0, 0), 1, std::make_shared<rt::dielectric>(1.5)));
     world.add(std::make_shared<rt::sphere>(point3(0, 0, 0), 0.8,
                                            std::make_shared<rt::dielectric>(1 / 1.5)));
     auto result = run_furnace(std::move(world));
@@ -104,7 +104,7 @@ TEST_CASE("furnace: a glass sphere with an air bubble (total internal reflection
 TEST_CASE("furnace: a glass sphere at max depth 1 returns nothing past its surface", "[ch05]") {
     // One segment: the camera ray hits the glass and the path ends before seeing the background.
     auto result = run_furnace(one_sphere(std::make_shared<rt::dielectric>(1.5)), 1);
-    auto on = result.on_object.estimate();
+    auto on     = result.on_object.estimate();
     CHECK(on.mean == 0);
     check_mean(result.off_object, 1.0);
 }

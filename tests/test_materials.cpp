@@ -65,7 +65,7 @@ TEST_CASE("dielectric: head-on rays mostly refract, with probability 1 - R0", "[
     rt::ray in(point3(0, 0, 5), vec3(0, 0, -1));
     auto rec = hit_unit_sphere(glass, in);
     rt::sampler s(11);
-    const int n = 100000;
+    const int n   = 100000;
     int reflected = 0;
     for (int k = 0; k < n; ++k) {
         s.start_pixel_sample(0, 0, k);

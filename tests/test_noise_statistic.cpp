@@ -63,7 +63,7 @@ TEST_CASE("noise statistic: a pixel that missed a rare path is not a failure", "
     const double sample_variance = value * value * p * (1 - p);
     for (int y = 0; y < 16; ++y) {
         for (int x = 0; x < 16; ++x) {
-            bool edge = x == 15 && y == 0;
+            bool edge      = x == 15 && y == 0;
             rt::real truth = rt::real(edge ? value * (1 - p) : value);
             rt::real v     = rt::real(edge ? sample_variance / 4096 : 0);
             test.set(x, y, rt::color(value, value, value));  // all 16 samples saw the sky

@@ -16,7 +16,7 @@ rt::scene empty_sky() {
 
 int main(int argc, char** argv) {
     // A gradient needs few samples; one segment per path, since nothing can be hit.
-    rt::command_line cli("ch01_background", {.width = 400, .render = {.samples_per_pixel = 4,
-                                                                      .max_depth = 1}});
+    rt::command_line cli("ch01_background",
+                         {.width = 400, .render = {.samples_per_pixel = 4, .max_depth = 1}});
     return cli.run(argc, argv, empty_sky);
 }

@@ -25,7 +25,7 @@ rt::scene sphere_on_ground() {
 
 int main(int argc, char** argv) {
     // The normal shading absorbs every ray it colors, so one segment per path is enough.
-    rt::command_line cli("ch02_sphere", {.width = 400, .render = {.samples_per_pixel = 100,
-                                                                  .max_depth = 1}});
+    rt::command_line cli("ch02_sphere",
+                         {.width = 400, .render = {.samples_per_pixel = 100, .max_depth = 1}});
     return cli.run(argc, argv, sphere_on_ground);
 }

@@ -20,8 +20,8 @@ rt::scene matte_spheres_on_floor() {
 
     rt::scene scene;
     // The floor: y = -0.5, x in [-3, 3], z in [-4, 1]; its far edge shows the sky behind it.
-    scene.world.add(std::make_shared<rt::quad>(point3(-3, -0.5, -4), vec3(6, 0, 0), vec3(0, 0, 5),
-                                               floor));
+    scene.world.add(
+        std::make_shared<rt::quad>(point3(-3, -0.5, -4), vec3(6, 0, 0), vec3(0, 0, 5), floor));
     scene.world.add(std::make_shared<rt::sphere>(point3(0, 0, -1.2), 0.5, blue));
     scene.world.add(std::make_shared<rt::sphere>(point3(-1.1, 0, -1.5), 0.5, gray));
     scene.world.add(std::make_shared<rt::sphere>(point3(1.1, 0, -1.5), 0.5, red));
@@ -35,7 +35,7 @@ rt::scene matte_spheres_on_floor() {
 }
 
 int main(int argc, char** argv) {
-    rt::command_line cli("ch03_diffuse", {.width = 400, .render = {.samples_per_pixel = 100,
-                                                                   .max_depth = 50}});
+    rt::command_line cli("ch03_diffuse",
+                         {.width = 400, .render = {.samples_per_pixel = 100, .max_depth = 50}});
     return cli.run(argc, argv, matte_spheres_on_floor);
 }

@@ -30,7 +30,7 @@ rt::scene metal_spheres() {
 }
 
 int main(int argc, char** argv) {
-    rt::command_line cli("ch04_metal", {.width = 400, .render = {.samples_per_pixel = 100,
-                                                                 .max_depth = 50}});
+    rt::command_line cli("ch04_metal",
+                         {.width = 400, .render = {.samples_per_pixel = 100, .max_depth = 50}});
     return cli.run(argc, argv, metal_spheres);
 }

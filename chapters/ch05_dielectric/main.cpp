@@ -18,7 +18,7 @@ rt::scene glass_scene_from_origin() {
 }
 
 int main(int argc, char** argv) {
-    rt::command_line cli("ch05_dielectric", {.width = 400, .render = {.samples_per_pixel = 100,
-                                                                      .max_depth = 50}});
+    rt::command_line cli("ch05_dielectric",
+                         {.width = 400, .render = {.samples_per_pixel = 100, .max_depth = 50}});
     return cli.run(argc, argv, glass_scene_from_origin);
 }

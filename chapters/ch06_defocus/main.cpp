@@ -13,11 +13,11 @@
 // The glass scene from above and to the side (the seed report's defocus camera).
 rt::scene glass_scene_through_lens(std::optional<double> aperture, std::optional<double> focus) {
     rt::scene scene;
-    scene.world        = glass_with_bubble();
-    scene.sky          = rt::background::sky();
-    scene.cam.vfov     = 20;
-    scene.cam.lookfrom = rt::point3(3, 3, 2);
-    scene.cam.lookat   = rt::point3(0, 0, -1);
+    scene.world          = glass_with_bubble();
+    scene.sky            = rt::background::sky();
+    scene.cam.vfov       = 20;
+    scene.cam.lookfrom   = rt::point3(3, 3, 2);
+    scene.cam.lookat     = rt::point3(0, 0, -1);
     scene.cam.aperture   = aperture.value_or(2.0);
     scene.cam.focus_dist = focus.value_or(0);  // 0: focus on lookat
     return scene;
@@ -33,21 +33,24 @@ rt::scene final_scene(std::optional<double> aperture, std::optional<double> focu
     scene.cam.lookfrom   = rt::point3(13, 2, 3);
     scene.cam.lookat     = rt::point3(0, 0, 0);
     scene.cam.focus_dist = focus.value_or(10.0);
-    scene.cam.aperture   = aperture.value_or(2 * scene.cam.focus_dist *
-                                           std::tan(rt::degrees_to_radians(0.3)));
+    scene.cam.aperture =
+        aperture.value_or(2 * scene.cam.focus_dist * std::tan(rt::degrees_to_radians(0.3)));
     return scene;
 }
 
 int main(int argc, char** argv) {
-    rt::command_line cli("ch06_defocus", {.width = 400, .render = {.samples_per_pixel = 100,
-                                                                   .max_depth = 50}});
+    rt::command_line cli("ch06_defocus",
+                         {.width = 400, .render = {.samples_per_pixel = 100, .max_depth = 50}});
     std::optional<double> aperture, focus;
     std::string which = "glass";
-    cli.app().add_option("--aperture", aperture, "Lens diameter (default 2.0; final: 0.105)")
+    cli.app()
+        .add_option("--aperture", aperture, "Lens diameter (default 2.0; final: 0.105)")
         ->check(CLI::NonNegativeNumber);
-    cli.app().add_option("--focus-dist", focus, "Distance to the sharp plane (default: lookat)")
+    cli.app()
+        .add_option("--focus-dist", focus, "Distance to the sharp plane (default: lookat)")
         ->check(CLI::PositiveNumber);
-    cli.app().add_option("--scene", which, "glass, or final (book 1's random spheres)")
+    cli.app()
+        .add_option("--scene", which, "glass, or final (book 1's random spheres)")
         ->check(CLI::IsMember({"glass", "final"}));
     return cli.run(argc, argv, [&] {
         if (which == "glass") return glass_scene_through_lens(aperture, focus);

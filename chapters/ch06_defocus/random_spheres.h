@@ -17,7 +17,7 @@ inline rt::hittable_list random_spheres() {
     using rt::color, rt::point3;
     rt::pcg32 rng(/*sequence=*/1, /*seed=*/2024);
     auto random_color = [&](double lo, double hi) {
-        auto r = [&] { return lo + (hi - lo) * rng.uniform(); };
+        auto r     = [&] { return lo + (hi - lo) * rng.uniform(); };
         double red = r(), green = r();
         return color(red, green, r());
     };
@@ -43,8 +43,8 @@ inline rt::hittable_list random_spheres() {
             world.add(std::make_shared<rt::sphere>(center, 0.2, mat));
         }
     }
-    world.add(std::make_shared<rt::sphere>(point3(0, 1, 0), 1.0,
-                                           std::make_shared<rt::dielectric>(1.5)));
+    world.add(
+        std::make_shared<rt::sphere>(point3(0, 1, 0), 1.0, std::make_shared<rt::dielectric>(1.5)));
     world.add(std::make_shared<rt::sphere>(point3(-4, 1, 0), 1.0,
                                            std::make_shared<rt::lambertian>(color(0.4, 0.2, 0.1))));
     world.add(std::make_shared<rt::sphere>(point3(4, 1, 0), 1.0,

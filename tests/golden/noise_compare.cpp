@@ -30,10 +30,10 @@ int main(int argc, char** argv) {
             }
         }
         auto r = rt_test::compare_within_noise(test, test_var, ref, ref_var, ref_spp / test_spp);
-        std::printf("noise_compare: %d of %d block tests beyond |z| = %.2f; worst z = %.2f at "
-                    "block (%d, %d) channel %d\n",
-                    r.failed, r.blocks, r.z_limit, r.worst_z, r.worst_x, r.worst_y,
-                    r.worst_channel);
+        std::printf(
+            "noise_compare: %d of %d block tests beyond |z| = %.2f; worst z = %.2f at "
+            "block (%d, %d) channel %d\n",
+            r.failed, r.blocks, r.z_limit, r.worst_z, r.worst_x, r.worst_y, r.worst_channel);
         return r.passed() ? 0 : 1;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "noise_compare: error: %s\n", e.what());
