@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <limits>
 
 #include "interval.h"
 #include "ray.h"
@@ -57,6 +58,7 @@ class aabb {
             real t0            = (ax.min - origin[axis]) * inv_dir[axis];
             real t1            = (ax.max - origin[axis]) * inv_dir[axis];
             if (t0 > t1) std::swap(t0, t1);
+            t1 *= robust_factor;
             if (t0 > ray_t.min) ray_t.min = t0;
             if (t1 < ray_t.max) ray_t.max = t1;
             if (ray_t.max < ray_t.min) return false;
@@ -65,6 +67,10 @@ class aabb {
     }
 
   private:
+    // Widens the far slab distance by a few ulps so that rounding in the slab test can never
+    // reject a box whose contents the ray does hit (pbrt's 1 + 2 gamma(3)).
+    static constexpr real robust_factor = 1 + 4 * std::numeric_limits<real>::epsilon();
+
     // A flat box (a quad in a coordinate plane) still needs some thickness so the slab test
     // does not divide a zero width; widen any axis thinner than delta around its middle.
     void pad_to_minimums() {

@@ -1,10 +1,12 @@
 // What a ray can hit, and what it learns at the hit. Chapter 02.
-// A hit record stores the nearest hit's distance t, point p and a unit normal that always faces
-// the incoming ray (front_face says whether that is the outward normal).
+// A hit record stores the nearest hit's distance t, point p, surface coordinates (u, v) and a
+// unit normal that always faces the incoming ray (front_face says whether that is the outward
+// normal). Bounding boxes come in chapter 07.
 #pragma once
 
 #include <limits>
 
+#include "aabb.h"
 #include "interval.h"
 #include "ray.h"
 
@@ -22,6 +24,7 @@ struct hit_record {
     vec3 normal;                    // unit, facing against the incoming ray
     const material* mat = nullptr;  // owned by the scene, never null for a hit
     real t              = 0;
+    real u = 0, v = 0;           // surface coordinates of p, for textures
     real p_error        = 0;     // bound on the distance of p from the true surface
     bool front_face     = true;  // the ray arrived from the outside
 
@@ -48,6 +51,9 @@ class hittable {
     // Finds the nearest hit with t inside ray_t. On a hit, fills rec completely and returns true;
     // on a miss returns false and leaves rec unchanged.
     virtual bool hit(const ray& r, interval ray_t, hit_record& rec) const = 0;
+
+    // A box that contains the object at every time of the shutter interval [0, 1].
+    virtual aabb bounding_box() const = 0;
 };
 
 }  // namespace rt

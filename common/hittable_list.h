@@ -19,6 +19,8 @@ class hittable_list : public hittable {
 
     // Each object is asked only for hits nearer than the nearest found so far.
     bool hit(const ray& r, interval ray_t, hit_record& rec) const override;
+
+    aabb bounding_box() const override;
 };
 
 }  // namespace rt

@@ -2,12 +2,17 @@
 
 #include "onb.h"
 #include "sampling.h"
+#include "error.h"
 #include "validate.h"
 
 namespace rt {
 
-lambertian::lambertian(const color& a) : albedo(a) {
+lambertian::lambertian(const color& a) : albedo(std::make_shared<solid_color>(a)) {
     require_reflectance(a, "lambertian albedo");
+}
+
+lambertian::lambertian(std::shared_ptr<texture> a) : albedo(std::move(a)) {
+    if (!albedo) throw user_error("lambertian needs a texture");
 }
 
 bool lambertian::scatter(const ray& r_in, const hit_record& rec, sampler& s, color& attenuation,
@@ -16,7 +21,7 @@ bool lambertian::scatter(const ray& r_in, const hit_record& rec, sampler& s, col
     // local frame needs no rejection loop and no degenerate-direction fix-up.
     vec3 direction = onb(rec.normal).to_world(sample_cosine_hemisphere(s.next_2d()));
     scattered      = rec.spawn_ray(direction, r_in.time());
-    attenuation    = albedo;
+    attenuation    = albedo->value(rec.u, rec.v, rec.p);
     return true;
 }
 

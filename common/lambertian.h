@@ -2,7 +2,10 @@
 // Sampling cos(theta)/pi cancels f * cos(theta) / pdf down to the albedo.
 #pragma once
 
+#include <memory>
+
 #include "material.h"
+#include "texture.h"
 
 namespace rt {
 
@@ -10,12 +13,14 @@ class lambertian : public material {
   public:
     // Throws user_error unless every channel of albedo is in [0, 1] (more would create energy).
     explicit lambertian(const color& albedo);
+    // An albedo that varies over the surface (chapter 08); its values must lie in [0, 1].
+    explicit lambertian(std::shared_ptr<texture> albedo);
 
     bool scatter(const ray& r_in, const hit_record& rec, sampler& s, color& attenuation,
                  ray& scattered) const override;
 
   private:
-    color albedo;
+    std::shared_ptr<texture> albedo;
 };
 
 }  // namespace rt

@@ -39,12 +39,19 @@ bool quad::hit(const ray& r, interval ray_t, hit_record& rec) const {
     if (!(alpha >= 0 && alpha <= 1 && beta >= 0 && beta <= 1)) return false;
 
     rec.t = t;
+    rec.u = alpha;
+    rec.v = beta;
     // Move p onto the plane so its error no longer grows with the distance travelled.
     rec.p       = p - (dot(normal, p) - D) * normal;
     rec.p_error = spawn_offset_scale * (max_abs_component(rec.p) + std::fabs(D));
     rec.set_face_normal(r, normal);
     rec.mat = mat.get();
     return true;
+}
+
+aabb quad::bounding_box() const {
+    // The box of all four corners (the two diagonals' boxes); aabb pads a flat one.
+    return aabb(aabb(Q, Q + u + v), aabb(Q + u, Q + v));
 }
 
 }  // namespace rt

@@ -16,7 +16,9 @@ class quad : public hittable {
     // Throws user_error when u and v span no area (zero, or parallel).
     quad(const point3& Q, const vec3& u, const vec3& v, std::shared_ptr<material> mat);
 
+    // On a hit, (u, v) = (a, b): the hit's coordinates along the two edges.
     bool hit(const ray& r, interval ray_t, hit_record& rec) const override;
+    aabb bounding_box() const override;
 
   private:
     point3 Q;

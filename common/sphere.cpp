@@ -1,5 +1,6 @@
 #include "sphere.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -9,7 +10,10 @@
 namespace rt {
 
 sphere::sphere(const point3& center, real radius, std::shared_ptr<material> m)
-    : center_(center), radius_(radius), mat(std::move(m)) {
+    : sphere(center, center, radius, std::move(m)) {}
+
+sphere::sphere(const point3& c0, const point3& c1, real radius, std::shared_ptr<material> m)
+    : center0(c0), velocity(c1 - c0), radius_(radius), mat(std::move(m)) {
     if (!(radius > 0) || !std::isfinite(radius)) {
         std::ostringstream message;
         message << "sphere radius must be positive and finite, got " << radius;
@@ -21,7 +25,8 @@ sphere::sphere(const point3& center, real radius, std::shared_ptr<material> m)
 bool sphere::hit(const ray& r, interval ray_t, hit_record& rec) const {
     // With f = A - C: a t^2 + 2 b t + c = 0, a = b.b, b = f.b, c = f.f - r^2.
     const vec3& d = r.direction();
-    vec3 f        = r.origin() - center_;
+    point3 center = center_at(r.time());
+    vec3 f        = r.origin() - center;
     real a        = dot(d, d);
     real b        = dot(f, d);
     real c        = dot(f, f) - radius_ * radius_;
@@ -38,12 +43,12 @@ bool sphere::hit(const ray& r, interval ray_t, hit_record& rec) const {
     vec3 g               = a * f - b * d;
     real a2_discriminant = radius_ * radius_ * a * a - dot(g, g);
     if (a2_discriminant < 0) return false;
-    return record_hit(r, ray_t, rec, a, b, c, a2_discriminant);
+    return record_hit(r, ray_t, rec, center, a, b, c, a2_discriminant);
 }
 
 // The rarer half of hit(), kept out of line so the common miss stays a short function.
-bool sphere::record_hit(const ray& r, interval ray_t, hit_record& rec, real a, real b, real c,
-                        real a2_discriminant) const {
+bool sphere::record_hit(const ray& r, interval ray_t, hit_record& rec, const point3& center,
+                        real a, real b, real c, real a2_discriminant) const {
     // Stable roots: q never cancels, since b and sign(b) sqrt(...) add with the same sign.
     // sqrt(b^2 - a c) = sqrt(a * discriminant) = sqrt(a2_discriminant / a).
     real q     = -(b + std::copysign(std::sqrt(a2_discriminant / a), b));
@@ -61,13 +66,28 @@ bool sphere::record_hit(const ray& r, interval ray_t, hit_record& rec, real a, r
     rec.t = root;
     // Project the point back onto the sphere: p then lies within a few ulps of the surface
     // whatever the distance travelled, which keeps the spawn offset small.
-    vec3 from_center    = r.at(root) - center_;
+    vec3 from_center    = r.at(root) - center;
     vec3 outward_normal = from_center / from_center.length();
-    rec.p               = center_ + radius_ * outward_normal;
-    rec.p_error         = spawn_offset_scale * (max_abs_component(center_) + radius_);
+    rec.p               = center + radius_ * outward_normal;
+    rec.p_error         = spawn_offset_scale * (max_abs_component(center) + radius_);
     rec.set_face_normal(r, outward_normal);
+    uv_from_normal(outward_normal, rec.u, rec.v);
     rec.mat = mat.get();
     return true;
+}
+
+aabb sphere::bounding_box() const {
+    vec3 extent(radius_, radius_, radius_);
+    aabb at_start(center0 - extent, center0 + extent);
+    point3 center1 = center0 + velocity;
+    return aabb(at_start, aabb(center1 - extent, center1 + extent));
+}
+
+void sphere::uv_from_normal(const vec3& n, real& u, real& v) {
+    real theta = std::acos(std::clamp(-n.y(), real(-1), real(1)));
+    real phi   = std::atan2(-n.z(), n.x()) + pi;
+    u          = phi / (2 * pi);
+    v          = theta / pi;
 }
 
 }  // namespace rt

@@ -1,0 +1,53 @@
+// A texture: a color that varies over a surface, looked up by the hit's surface coordinates
+// (u, v) and/or its position p. Chapter 08.
+#pragma once
+
+#include <cmath>
+#include <memory>
+
+#include "vec3.h"
+
+namespace rt {
+
+class texture {
+  public:
+    virtual ~texture() = default;
+
+    // The linear RGB reflectance at surface coordinates (u, v) of the point p.
+    virtual color value(real u, real v, const point3& p) const = 0;
+};
+
+// The same color everywhere.
+class solid_color : public texture {
+  public:
+    explicit solid_color(const color& c) : albedo(c) {}
+    color value(real, real, const point3&) const override { return albedo; }
+
+  private:
+    color albedo;
+};
+
+// A 3D checkerboard of cubes of side `scale` filling space (a solid texture: it needs no
+// surface coordinates). We use the book 2 rule on the floors of the coordinates,
+//   n = floor(x / scale) + floor(y / scale) + floor(z / scale),  even n -> even, odd n -> odd,
+// not the seed report's sign of sin(x) sin(y) sin(z): the floors give cubes of exactly `scale`
+// and no flicker where a sine crosses zero on a surface.
+class checker_texture : public texture {
+  public:
+    checker_texture(real scale, std::shared_ptr<texture> even, std::shared_ptr<texture> odd);
+    checker_texture(real scale, const color& even_color, const color& odd_color)
+        : checker_texture(scale, std::make_shared<solid_color>(even_color),
+                          std::make_shared<solid_color>(odd_color)) {}
+
+    color value(real u, real v, const point3& p) const override {
+        auto cell = [this](real x) { return static_cast<long long>(std::floor(x * inv_scale)); };
+        long long n = cell(p.x()) + cell(p.y()) + cell(p.z());
+        return (n % 2 == 0 ? even : odd)->value(u, v, p);
+    }
+
+  private:
+    real inv_scale;
+    std::shared_ptr<texture> even, odd;
+};
+
+}  // namespace rt
