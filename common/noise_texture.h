@@ -13,7 +13,8 @@ namespace rt {
 
 class noise_texture : public texture {
   public:
-    explicit noise_texture(real scale, std::uint64_t seed = 0) : noise(seed), scale(scale) {}
+    explicit noise_texture(real stripe_scale, std::uint64_t seed = 0)
+        : noise(seed), scale(stripe_scale) {}
 
     color value(real, real, const point3& p) const override {
         real gray = real(0.5) * (1 + std::sin(scale * p.z() + 10 * noise.turbulence(p, 7)));

@@ -2,6 +2,8 @@
 // ones, on a huge ground sphere. The small spheres' placement and materials come from a PCG32
 // with a fixed seed, so the scene is the same on every run and for every --seed (which only
 // changes the render's noise); it is statistically like the book's, not identical to it.
+// Chapter 07 reuses it as book 2's "bouncing spheres": the diffuse spheres then move up by a
+// random height during the shutter, and the ground is a checkerboard.
 #pragma once
 
 #include <memory>
@@ -12,9 +14,10 @@
 #include "common/metal.h"
 #include "common/rng.h"
 #include "common/sphere.h"
+#include "common/texture.h"
 
-inline rt::hittable_list random_spheres() {
-    using rt::color, rt::point3;
+inline rt::hittable_list random_spheres(bool bouncing = false) {
+    using rt::color, rt::point3, rt::vec3;
     rt::pcg32 rng(/*sequence=*/1, /*seed=*/2024);
     auto random_color = [&](double lo, double hi) {
         auto r     = [&] { return lo + (hi - lo) * rng.uniform(); };
@@ -23,8 +26,10 @@ inline rt::hittable_list random_spheres() {
     };
 
     rt::hittable_list world;
-    world.add(std::make_shared<rt::sphere>(point3(0, -1000, 0), 1000,
-                                           std::make_shared<rt::lambertian>(color(0.5, 0.5, 0.5))));
+    auto ground = bouncing ? std::make_shared<rt::lambertian>(std::make_shared<rt::checker_texture>(
+                                 0.32, color(0.2, 0.3, 0.1), color(0.9, 0.9, 0.9)))
+                           : std::make_shared<rt::lambertian>(color(0.5, 0.5, 0.5));
+    world.add(std::make_shared<rt::sphere>(point3(0, -1000, 0), 1000, ground));
     for (int a = -11; a < 11; ++a) {
         for (int b = -11; b < 11; ++b) {
             double choose = rng.uniform();
@@ -32,15 +37,17 @@ inline rt::hittable_list random_spheres() {
             point3 center(a + 0.9 * dx, 0.2, b + 0.9 * dz);
             if ((center - point3(4, 0.2, 0)).length() <= 0.9) continue;
 
-            std::shared_ptr<rt::material> mat;
             if (choose < 0.8) {  // diffuse, albedo = random * random per channel
-                mat = std::make_shared<rt::lambertian>(random_color(0, 1) * random_color(0, 1));
+                auto mat = std::make_shared<rt::lambertian>(random_color(0, 1) * random_color(0, 1));
+                point3 end = bouncing ? center + vec3(0, 0.5 * rng.uniform(), 0) : center;
+                world.add(std::make_shared<rt::sphere>(center, end, 0.2, mat));
             } else if (choose < 0.95) {  // metal
-                mat = std::make_shared<rt::metal>(random_color(0.5, 1), 0.5 * rng.uniform());
+                auto mat = std::make_shared<rt::metal>(random_color(0.5, 1), 0.5 * rng.uniform());
+                world.add(std::make_shared<rt::sphere>(center, 0.2, mat));
             } else {  // glass
-                mat = std::make_shared<rt::dielectric>(1.5);
+                world.add(std::make_shared<rt::sphere>(center, 0.2,
+                                                       std::make_shared<rt::dielectric>(1.5)));
             }
-            world.add(std::make_shared<rt::sphere>(center, 0.2, mat));
         }
     }
     world.add(

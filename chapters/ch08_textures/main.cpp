@@ -1,0 +1,35 @@
+// Chapter 08: image textures. A sphere point with unit outward normal n gets surface coordinates
+//   u = phi / (2 pi),  phi = atan2(-n.z, n.x) + pi;    v = theta / pi,  theta = acos(-n.y),
+// and an equirectangular image (longitude across, latitude down) is looked up at (u, v): the
+// texel in column u W and row (1 - v) H. The Lambertian albedo is that texel, decoded to linear.
+#include <memory>
+#include <string>
+
+#include "common/image_texture.h"
+#include "common/lambertian.h"
+#include "common/options.h"
+#include "common/sphere.h"
+
+// Book 2's earth scene: a globe of radius 2 at the origin, seen from (0, 0, 12).
+rt::scene globe(const std::string& texture_file) {
+    auto surface = std::make_shared<rt::image_texture>(texture_file);
+    rt::scene scene;
+    scene.world.add(std::make_shared<rt::sphere>(rt::point3(0, 0, 0), 2,
+                                                 std::make_shared<rt::lambertian>(surface)));
+    scene.sky          = rt::background::uniform(rt::color(0.70, 0.80, 1.00));
+    scene.cam.vfov     = 20;
+    scene.cam.lookfrom = rt::point3(0, 0, 12);
+    scene.cam.lookat   = rt::point3(0, 0, 0);
+    return scene;
+}
+
+int main(int argc, char** argv) {
+    rt::command_line cli("ch08_textures",
+                         {.width = 400, .render = {.samples_per_pixel = 100, .max_depth = 50}});
+    // The project's own equirectangular map, made by tools/make-globe-texture.
+    std::string texture_file = RT_ASSET_DIR "/globe.png";
+    cli.app()
+        .add_option("--texture", texture_file, "Equirectangular image for the globe")
+        ->capture_default_str();
+    return cli.run(argc, argv, [&] { return globe(texture_file); });
+}
