@@ -52,12 +52,15 @@ class aabb {
     // rules turn into the right +-inf slab bounds). Returns whether the ray overlaps the box
     // within ray_t. NaN from 0 * inf (a ray exactly on a slab face) compares false and is
     // treated as "no constraint", so a ray along a face still counts as inside.
+    // Near and far are told apart by the sign of 1 / direction, not by comparing t0 with t1:
+    // a comparison with NaN would keep a -inf far distance (a ray along a face with direction
+    // -0), and on an empty box (min = +inf > max = -inf) it would swap +-inf into "everywhere".
     bool hit(const point3& origin, const vec3& inv_dir, interval ray_t) const {
         for (int axis = 0; axis < 3; ++axis) {
             const interval& ax = axis_interval(axis);
             real t0            = (ax.min - origin[axis]) * inv_dir[axis];
             real t1            = (ax.max - origin[axis]) * inv_dir[axis];
-            if (t0 > t1) std::swap(t0, t1);
+            if (inv_dir[axis] < 0) std::swap(t0, t1);
             t1 *= robust_factor;
             if (t0 > ray_t.min) ray_t.min = t0;
             if (t1 < ray_t.max) ray_t.max = t1;

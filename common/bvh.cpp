@@ -63,8 +63,9 @@ std::uint32_t bvh::build(std::vector<build_item>& items, std::size_t begin, std:
         return index;
     }
     auto bin_of = [&](const build_item& item) {
-        int b = int(bin_count * ((item.centroid[axis] - extent.min) / extent.size()));
-        return std::clamp(b, 0, bin_count - 1);
+        // The comparison also sends NaN (an infinite extent) to bin 0.
+        real f = (item.centroid[axis] - extent.min) / extent.size();
+        return f > 0 ? std::min(int(std::min(f, real(1)) * bin_count), bin_count - 1) : 0;
     };
     std::array<aabb, bin_count> bin_box;
     std::array<std::size_t, bin_count> bin_objects{};
@@ -106,14 +107,15 @@ std::uint32_t bvh::build(std::vector<build_item>& items, std::size_t begin, std:
 
     auto first = items.begin() + std::ptrdiff_t(begin), last = items.begin() + std::ptrdiff_t(end);
     std::size_t mid;
-    if (level < max_sah_depth) {
+    if (level < max_sah_depth && best_cost < infinity) {
         auto middle = std::partition(first, last, [&](const build_item& item) {
             return bin_of(item) < best_split;
         });
         mid = std::size_t(middle - items.begin());
     } else {
         // A pathological spread (say, exponentially spaced objects) could make SAH splits peel
-        // off one object at a time; deep down, split at the median to bound the depth.
+        // off one object at a time; deep down, split at the median to bound the depth. Also
+        // when no bin split separates anything (centroids too far apart for the bin arithmetic).
         mid = begin + count / 2;
         std::nth_element(first, items.begin() + std::ptrdiff_t(mid), last,
                          [&](const build_item& a, const build_item& b) {

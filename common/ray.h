@@ -1,5 +1,9 @@
 // A ray P(t) = A + t*b: origin A, direction b, and the instant it travels at. Chapter 01.
+// Chapter 12 adds a random key: bits a participating medium hashes into its own random numbers
+// while the ray is traced (see constant_medium.h), drawn from the sampler by the integrator.
 #pragma once
+
+#include <cstdint>
 
 #include "vec3.h"
 
@@ -17,10 +21,21 @@ class ray {
 
     point3 at(real t) const { return orig + t * dir; }
 
+    // The same ray seen from another frame (an instance's object space): same time and key.
+    ray in_frame(const point3& origin, const vec3& direction) const {
+        ray moved(origin, direction, tm);
+        moved.key = key;
+        return moved;
+    }
+
+    std::uint64_t random_key() const { return key; }
+    void set_random_key(std::uint64_t k) { key = k; }
+
   private:
     point3 orig;
     vec3 dir;
-    real tm = 0;
+    real tm           = 0;
+    std::uint64_t key = 0;
 };
 
 }  // namespace rt

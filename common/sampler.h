@@ -5,7 +5,8 @@
 //
 // Dimensions are drawn in a fixed order per camera sample; the layout is
 //   0-1 pixel jitter, 2-3 lens position, 4 shutter time,
-//   then per bounce: 2 for the scattering direction (+1 for a material's random choice).
+//   then per path segment: 2 for the ray's random key (next_key, used by participating media),
+//   then the material's own: lambertian 2, metal 3, dielectric 1, isotropic 2.
 // Each pixel sample may use up to 65536 dimensions before it would overlap the next one.
 #pragma once
 
@@ -32,6 +33,11 @@ class sampler {
     }
 
     real next_1d() { return rng.uniform(); }
+    // 64 random bits (two dimensions).
+    std::uint64_t next_key() {
+        std::uint64_t high = rng.next_u32();
+        return (high << 32u) | rng.next_u32();
+    }
     sample2 next_2d() {
         real u = rng.uniform();
         return {u, rng.uniform()};

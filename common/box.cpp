@@ -1,0 +1,38 @@
+#include "box.h"
+
+#include <algorithm>
+#include <sstream>
+
+#include "bvh.h"
+#include "error.h"
+#include "quad.h"
+
+namespace rt {
+
+std::vector<std::shared_ptr<hittable>> box_faces(const point3& a, const point3& b,
+                                                 std::shared_ptr<material> mat) {
+    point3 lo(std::min(a.x(), b.x()), std::min(a.y(), b.y()), std::min(a.z(), b.z()));
+    point3 hi(std::max(a.x(), b.x()), std::max(a.y(), b.y()), std::max(a.z(), b.z()));
+    if (!(lo.x() < hi.x() && lo.y() < hi.y() && lo.z() < hi.z())) {
+        std::ostringstream message;
+        message << "box is flat: corners " << a << " and " << b << " share a coordinate";
+        throw user_error(message.str());
+    }
+    vec3 dx(hi.x() - lo.x(), 0, 0), dy(0, hi.y() - lo.y(), 0), dz(0, 0, hi.z() - lo.z());
+
+    std::vector<std::shared_ptr<hittable>> sides;
+    // Each face lists its edges so that u x v points outwards.
+    sides.push_back(std::make_shared<quad>(point3(lo.x(), lo.y(), hi.z()), dx, dy, mat));  // front +z
+    sides.push_back(std::make_shared<quad>(point3(hi.x(), lo.y(), hi.z()), -dz, dy, mat)); // right +x
+    sides.push_back(std::make_shared<quad>(point3(hi.x(), lo.y(), lo.z()), -dx, dy, mat)); // back -z
+    sides.push_back(std::make_shared<quad>(point3(lo.x(), lo.y(), lo.z()), dz, dy, mat));  // left -x
+    sides.push_back(std::make_shared<quad>(point3(lo.x(), hi.y(), hi.z()), dx, -dz, mat)); // top +y
+    sides.push_back(std::make_shared<quad>(point3(lo.x(), lo.y(), lo.z()), dx, dz, mat));  // bottom -y
+    return sides;
+}
+
+std::shared_ptr<hittable> box(const point3& a, const point3& b, std::shared_ptr<material> mat) {
+    return std::make_shared<bvh>(box_faces(a, b, std::move(mat)));
+}
+
+}  // namespace rt

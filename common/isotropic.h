@@ -1,0 +1,25 @@
+// The phase function of a participating medium that scatters equally in all directions:
+// p(w) = 1 / (4 pi). Sampling it exactly makes the weight just the medium's albedo. Chapter 12.
+#pragma once
+
+#include <memory>
+
+#include "material.h"
+#include "texture.h"
+
+namespace rt {
+
+class isotropic : public material {
+  public:
+    explicit isotropic(const color& albedo);  // throws user_error outside [0, 1]
+    explicit isotropic(std::shared_ptr<texture> albedo);
+
+    // Draws 2 sampler dimensions: a uniform direction on the sphere.
+    bool scatter(const ray& r_in, const hit_record& rec, sampler& s, color& attenuation,
+                 ray& scattered) const override;
+
+  private:
+    std::shared_ptr<texture> albedo;
+};
+
+}  // namespace rt
