@@ -38,6 +38,30 @@ def read_timings():
     return rows
 
 
+def benchmark_section():
+    path = os.path.join(REPORT, "figures", "benchmarks.txt")
+    if not os.path.exists(path):
+        return []
+    out = ["", "## Single-thread benchmarks against the book's code", "",
+           "Measured by `tools/benchmark` with `--threads 1`. The book's figures are those its",
+           "own code reaches on one core of this kind of machine (quoted in the issues; its",
+           "`rand()` and scenes differ in detail, so compare orders of magnitude).", "",
+           "| benchmark | settings | M samples/s (ours, 1 thread) | book's code | ours / book |",
+           "|---|---|---|---|---|"]
+    with open(path) as f:
+        for line in f:
+            name, description, book, args, summary = line.rstrip("\n").split("|", 4)
+            match = SUMMARY.search(summary)
+            if not match:
+                raise SystemExit(f"make_report: no timing in benchmark {name}: {summary}")
+            rate = float(match["rate"])
+            book_cell = f"{book}" if book else "-"
+            ratio = f"{rate / float(book):.2f}" if book else "-"
+            out.append(f"| {description} | `{args}` ({match['size']}, {match['spp']} spp) | "
+                       f"{rate:.3f} | {book_cell} | {ratio} |")
+    return out
+
+
 def machine():
     cpu = platform.processor() or "unknown CPU"
     try:
@@ -64,6 +88,7 @@ def main():
     for figure, _extra, t in timings:
         out.append(f"| [{figure}](#{figure}) | {t['size']} | {t['spp']} | {t['depth']} | "
                    f"{t['threads']} | {t['seconds']} | {t['rate']} |")
+    out += benchmark_section()
     out += ["", "## Figures", ""]
     for figure, extra, t in timings:
         chapter, caption = captions[figure]
