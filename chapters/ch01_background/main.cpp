@@ -4,6 +4,7 @@
 #include "common/options.h"
 
 // Nothing to hit: the camera at the origin looks down -z with a 90 degree vertical view.
+// (These are also the defaults of rt::scene and rt::camera, which later chapters rely on.)
 rt::scene empty_sky() {
     rt::scene scene;
     scene.sky              = rt::background::sky();

@@ -15,11 +15,7 @@ rt::scene sphere_on_ground() {
     rt::scene scene;
     scene.world.add(std::make_shared<rt::sphere>(rt::point3(0, 0, -1), 0.5, normals));
     scene.world.add(std::make_shared<rt::sphere>(rt::point3(0, -100.5, -1), 100, normals));
-    scene.sky              = rt::background::sky();
-    scene.cam.aspect_ratio = 16.0 / 9.0;
-    scene.cam.vfov         = 90;
-    scene.cam.lookfrom     = rt::point3(0, 0, 0);
-    scene.cam.lookat       = rt::point3(0, 0, -1);
+    // The default sky and camera: at the origin looking down -z, vfov 90, 16:9.
     return scene;
 }
 

@@ -26,11 +26,7 @@ rt::scene matte_spheres_on_floor() {
     scene.world.add(std::make_shared<rt::sphere>(point3(-1.1, 0, -1.5), 0.5, gray));
     scene.world.add(std::make_shared<rt::sphere>(point3(1.1, 0, -1.5), 0.5, red));
     scene.world.add(std::make_shared<rt::sphere>(point3(0.45, -0.35, -0.55), 0.15, white));
-    scene.sky              = rt::background::sky();
-    scene.cam.aspect_ratio = 16.0 / 9.0;
-    scene.cam.vfov         = 90;
-    scene.cam.lookfrom     = point3(0, 0, 0);
-    scene.cam.lookat       = point3(0, 0, -1);
+    // The default sky and camera: at the origin looking down -z, vfov 90, 16:9.
     return scene;
 }
 

@@ -21,11 +21,7 @@ rt::scene metal_spheres() {
     scene.world.add(std::make_shared<rt::sphere>(point3(0, 0, -1), 0.5, center));
     scene.world.add(std::make_shared<rt::sphere>(point3(-1, 0, -1), 0.5, polished));
     scene.world.add(std::make_shared<rt::sphere>(point3(1, 0, -1), 0.5, brushed));
-    scene.sky              = rt::background::sky();
-    scene.cam.aspect_ratio = 16.0 / 9.0;
-    scene.cam.vfov         = 90;
-    scene.cam.lookfrom     = point3(0, 0, 0);
-    scene.cam.lookat       = point3(0, 0, -1);
+    // The default sky and camera: at the origin looking down -z, vfov 90, 16:9.
     return scene;
 }
 

@@ -9,11 +9,7 @@
 rt::scene glass_scene_from_origin() {
     rt::scene scene;
     scene.world            = glass_with_bubble();
-    scene.sky              = rt::background::sky();
-    scene.cam.aspect_ratio = 16.0 / 9.0;
-    scene.cam.vfov         = 90;
-    scene.cam.lookfrom     = rt::point3(0, 0, 0);
-    scene.cam.lookat       = rt::point3(0, 0, -1);
+    // The default sky and camera: at the origin looking down -z, vfov 90, 16:9.
     return scene;
 }
 
