@@ -1,7 +1,6 @@
 #include "constant_medium.h"
 
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <sstream>
 
@@ -11,16 +10,6 @@
 #include "validate.h"
 
 namespace rt {
-
-namespace {
-
-std::uint64_t bits_of(real x) {
-    std::uint64_t bits = 0;
-    std::memcpy(&bits, &x, sizeof x);
-    return bits;
-}
-
-}  // namespace
 
 constant_medium::constant_medium(std::shared_ptr<hittable> b, real density, const color& albedo)
     : constant_medium(std::move(b), density, std::make_shared<solid_color>(albedo)) {
@@ -39,8 +28,9 @@ constant_medium::constant_medium(std::shared_ptr<hittable> b, real density,
         throw user_error(message.str());
     }
     aabb box = boundary->bounding_box();
-    id       = hash_values(bits_of(density), bits_of(box.x.min) ^ bits_of(box.y.max),
-                           bits_of(box.z.min) ^ bits_of(box.x.max) ^ bits_of(box.z.max));
+    id = hash_values(bits_of(density),
+                     hash_values(bits_of(box.x.min), bits_of(box.y.min), bits_of(box.z.min)),
+                     hash_values(bits_of(box.x.max), bits_of(box.y.max), bits_of(box.z.max)));
 }
 
 bool constant_medium::hit(const ray& r, interval ray_t, hit_record& rec) const {

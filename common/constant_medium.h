@@ -11,7 +11,9 @@
 //
 // xi comes from hashing the ray's random key (drawn from the sampler per path segment) with
 // this medium's own id, so each medium a segment crosses makes an independent choice, and the
-// render stays deterministic. The id is a hash of the medium's box and density.
+// render stays deterministic. The id is a hash of the medium's box and density. One medium placed
+// twice by instances (translate, rotate) also chooses independently in each placement, because an
+// instance hands its object a key of its own (instance.h).
 #pragma once
 
 #include <cstdint>

@@ -16,8 +16,10 @@ image_texture::image_texture(const std::string& path) {
     std::unique_ptr<stbi_uc, void (*)(void*)> pixels(stbi_load(path.c_str(), &w, &h, &channels, 3),
                                                      stbi_image_free);
     if (!pixels) {
+        // stb gives no reason for some broken files (a PNG cut just before its end chunk).
         const char* reason = stbi_failure_reason();
-        throw user_error("cannot read texture '" + path + "': " + (reason ? reason : "unknown"));
+        throw user_error("cannot read texture '" + path +
+                         "': " + (reason && *reason ? reason : "not a readable image"));
     }
     std::array<real, 256> to_linear{};
     for (int i = 0; i < 256; ++i) to_linear[std::size_t(i)] = real(srgb_to_linear(i / 255.0));

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cstring>
 
 #include "scalar.h"
 
@@ -70,6 +71,13 @@ constexpr std::uint64_t mix_bits(std::uint64_t v) {
     v *= 0x94d049bb133111ebULL;
     v ^= v >> 31u;
     return v;
+}
+
+// The bit pattern of a real, to hash scene parameters into ids and salts.
+inline std::uint64_t bits_of(real x) {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &x, sizeof x);
+    return bits;
 }
 
 // A hash of several integers, used to pick a stream per (pixel, seed).

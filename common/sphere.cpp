@@ -13,7 +13,7 @@ sphere::sphere(const point3& center, real radius, std::shared_ptr<material> m)
     : sphere(center, center, radius, std::move(m)) {}
 
 sphere::sphere(const point3& c0, const point3& c1, real radius, std::shared_ptr<material> m)
-    : center0(c0), velocity(c1 - c0), radius_(radius), mat(std::move(m)) {
+    : center0(c0), center1(c1), velocity(c1 - c0), radius_(radius), mat(std::move(m)) {
     if (!(radius > 0) || !std::isfinite(radius)) {
         std::ostringstream message;
         message << "sphere radius must be positive and finite, got " << radius;
@@ -47,8 +47,8 @@ bool sphere::hit(const ray& r, interval ray_t, hit_record& rec) const {
 }
 
 // The rarer half of hit(), kept out of line so the common miss stays a short function.
-bool sphere::record_hit(const ray& r, interval ray_t, hit_record& rec, const point3& center,
-                        real a, real b, real c, real a2_discriminant) const {
+bool sphere::record_hit(const ray& r, interval ray_t, hit_record& rec, const point3& center, real a,
+                        real b, real c, real a2_discriminant) const {
     // Stable roots: q never cancels, since b and sign(b) sqrt(...) add with the same sign.
     // sqrt(b^2 - a c) = sqrt(a * discriminant) = sqrt(a2_discriminant / a).
     real q     = -(b + std::copysign(std::sqrt(a2_discriminant / a), b));
@@ -79,7 +79,6 @@ bool sphere::record_hit(const ray& r, interval ray_t, hit_record& rec, const poi
 aabb sphere::bounding_box() const {
     vec3 extent(radius_, radius_, radius_);
     aabb at_start(center0 - extent, center0 + extent);
-    point3 center1 = center0 + velocity;
     return aabb(at_start, aabb(center1 - extent, center1 + extent));
 }
 

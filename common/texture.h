@@ -40,13 +40,15 @@ class checker_texture : public texture {
                           std::make_shared<solid_color>(odd_color)) {}
 
     color value(real u, real v, const point3& p) const override {
-        auto cell = [this](real x) { return static_cast<long long>(std::floor(x * inv_scale)); };
+        // Divide, not multiply by 1 / scale: 1 / 3 is rounded, and x * (1 / 3) can round the
+        // largest float below a boundary 3k up to k, into the wrong cell.
+        auto cell   = [this](real x) { return static_cast<long long>(std::floor(x / cell_size)); };
         long long n = cell(p.x()) + cell(p.y()) + cell(p.z());
         return (n % 2 == 0 ? even : odd)->value(u, v, p);
     }
 
   private:
-    real inv_scale;
+    real cell_size;
     std::shared_ptr<texture> even, odd;
 };
 

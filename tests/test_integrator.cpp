@@ -8,10 +8,12 @@
 // runs out of depth and returns 0. So every single path is checked, not a mean.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "common/integrator.h"
 #include "common/lambertian.h"
@@ -191,4 +193,53 @@ TEST_CASE("integrator: the normal_shading material shows 0.5 * (n + 1) and nothi
     INFO(wrong << " of " << hits << " hits shaded wrong");
     CHECK(hits > 900);
     CHECK(wrong == 0);
+}
+
+namespace {
+
+// Hits like the object it wraps and records the random key of every ray it is asked about.
+class key_recorder : public rt::hittable {
+  public:
+    explicit key_recorder(std::shared_ptr<rt::hittable> wrapped) : object(std::move(wrapped)) {}
+    bool hit(const rt::ray& r, rt::interval ray_t, rt::hit_record& rec) const override {
+        keys.push_back(r.random_key());
+        return object->hit(r, ray_t, rec);
+    }
+    rt::aabb bounding_box() const override { return object->bounding_box(); }
+    mutable std::vector<std::uint64_t> keys;
+
+  private:
+    std::shared_ptr<rt::hittable> object;
+};
+
+}  // namespace
+
+TEST_CASE("integrator: every path segment gets a fresh random key, drawn from the sampler",
+          "[ch12]") {
+    // A Lambertian floor under a uniform sky, max_depth 2: segment 1 (the camera ray) hits the
+    // floor, segment 2 leaves it for the sky. Each segment must carry its own key (media along
+    // it make their choices from it), drawn at the documented place in the sampler's sequence:
+    // next_key() first, then the material's 2 dimensions (sampler.h).
+    auto recorder = std::make_shared<key_recorder>(
+        gray_quad(point3(-10, 0, -10), vec3(20, 0, 0), vec3(0, 0, 20)));
+    rt::scene sc;
+    sc.world.add(recorder);
+    sc.sky = rt::background::uniform(color(1, 1, 1));
+    rt::sampler s(77);
+    int same_keys = 0, misplaced = 0;
+    for (int k = 0; k < 1000; ++k) {
+        s.start_pixel_sample(3, 4, k);
+        rt::sampler expected = s;  // replays the draws trace_path should make
+        std::uint64_t key1   = expected.next_key();
+        expected.next_2d();  // the Lambertian bounce
+        std::uint64_t key2 = expected.next_key();
+        recorder->keys.clear();
+        color L = rt::trace_path(sc, rt::ray(point3(0, 1, 0), vec3(0.25, -1, 0.5)), s, 2);
+        REQUIRE(exactly(L, albedo));  // one bounce, then the sky: the path really had 2 segments
+        REQUIRE(recorder->keys.size() == 2);
+        same_keys += recorder->keys[0] == recorder->keys[1];
+        misplaced += recorder->keys[0] != key1 || recorder->keys[1] != key2;
+    }
+    CHECK(same_keys == 0);
+    CHECK(misplaced == 0);
 }

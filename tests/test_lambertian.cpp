@@ -5,13 +5,16 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "common/error.h"
 #include "common/lambertian.h"
 #include "common/rng.h"
 #include "common/sampling.h"
+#include "common/texture.h"
 #include "statistics.h"
 
 namespace {
@@ -131,4 +134,49 @@ TEST_CASE("lambertian: an albedo outside 0..1 throws a user_error naming it", "[
     }
     CHECK_NOTHROW(rt::lambertian(color(0, 0, 0)));
     CHECK_NOTHROW(rt::lambertian(color(1, 1, 1)));
+}
+
+TEST_CASE("lambertian: with a texture, the attenuation is the texture's value at (u, v, p)",
+          "[ch08]") {
+    // A texture that depends on all of u, v and p, with values in [0, 1], so that any mix-up
+    // (u for v, a stale p, the normal for p) changes the color.
+    class uvp_texture : public rt::texture {
+      public:
+        color value(real u, real v, const point3& p) const override {
+            return color(u, v, real(0.5) + real(0.5) * std::sin(p.x() + 2 * p.y() + 3 * p.z()));
+        }
+    };
+    auto texture = std::make_shared<uvp_texture>();
+    rt::lambertian mat(texture);
+    rt::pcg32 rng(5, 6);
+    rt::sampler s(13);
+    int wrong = 0;
+    for (int k = 0; k < 1000; ++k) {
+        real x = rng.uniform(), y = rng.uniform();
+        const point3 p(10 * x - 5, 10 * y - 5, 10 * rng.uniform() - 5);
+        const vec3 n = random_unit(rng);
+        auto rec     = hit_at(p, n, k % 2 == 0);
+        rec.u        = rng.uniform();
+        rec.v        = rng.uniform();
+        s.start_pixel_sample(k, 3, 0);
+        color attenuation;
+        rt::ray scattered;
+        REQUIRE(mat.scatter(rt::ray(p + n, -n, 0.5), rec, s, attenuation, scattered));
+        if (!exactly(attenuation, texture->value(rec.u, rec.v, rec.p))) ++wrong;
+    }
+    CHECK(wrong == 0);
+
+    // A checkerboard: the two cells give the two colors.
+    rt::lambertian checkered(std::make_shared<rt::checker_texture>(1, color(0.875, 0.875, 0.875),
+                                                                   color(0.25, 0.375, 0.125)));
+    for (const auto& [p, want] : {std::pair(point3(0.5, 0.5, 0.5), color(0.875, 0.875, 0.875)),
+                                  std::pair(point3(1.5, 0.5, 0.5), color(0.25, 0.375, 0.125))}) {
+        color attenuation;
+        rt::ray scattered;
+        s.start_pixel_sample(0, 4, 0);
+        REQUIRE(checkered.scatter(rt::ray(p + vec3(0, 0, 1), vec3(0, 0, -1)),
+                                  hit_at(p, vec3(0, 0, 1), true), s, attenuation, scattered));
+        CHECK(exactly(attenuation, want));
+    }
+    CHECK_THROWS_AS(rt::lambertian(std::shared_ptr<rt::texture>()), rt::user_error);
 }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <utility>
 
 #include "common/error.h"
 #include "common/normal_shading.h"
@@ -142,4 +143,65 @@ TEST_CASE("quad: zero area (u = 0, v = 0, or u parallel to v) throws a user_erro
                       Catch::Contains("zero area"));
     CHECK_THROWS_AS(rt::quad(corner, edge_u, edge_v, nullptr), rt::user_error);
     CHECK_NOTHROW(rt::quad(corner, edge_u, edge_v, mat));
+}
+
+TEST_CASE("quad: the bounding box is the box of the four corners, padded where flat", "[ch07]") {
+    // The floor quad in z = 3: x in [1, 3], y in [-2, 2], and z padded to 1e-4 around 3 (so
+    // the slab test can hit it from any side; see test_aabb).
+    const rt::aabb box = make_quad(corner, edge_u, edge_v).bounding_box();
+    CHECK(box.x.min == 1);
+    CHECK(box.x.max == 3);
+    CHECK(box.y.min == -2);
+    CHECK(box.y.max == 2);
+    CHECK(box.z.min < 3);
+    CHECK(box.z.max > 3);
+    CHECK(box.z.size() >= real(1e-4) - 8 * eps);  // the minimum, up to rounding around 3
+    CHECK(box.z.size() < real(2e-4));
+
+    // A tilted quad whose corners are extreme on different axes: Q, Q+u, Q+v, Q+u+v each hold
+    // some bound, so a box of Q and Q+u+v alone would miss some. u = (1, 2, -0.5),
+    // v = (-0.5, 0.25, 1.5) from Q = (-3, 1.5, 2): corners (-3, 1.5, 2), (-2, 3.5, 1.5),
+    // (-3.5, 1.75, 3.5), (-2.5, 3.75, 3); all exact.
+    const rt::aabb tilted =
+        make_quad(point3(-3, 1.5, 2), vec3(1, 2, -0.5), vec3(-0.5, 0.25, 1.5)).bounding_box();
+    CHECK(tilted.x.min == -3.5);
+    CHECK(tilted.x.max == -2);
+    CHECK(tilted.y.min == 1.5);
+    CHECK(tilted.y.max == 3.75);
+    CHECK(tilted.z.min == 1.5);
+    CHECK(tilted.z.max == 3.5);
+}
+
+TEST_CASE("quad: a hit's (u, v) are its plane coordinates (a, b): 0 and 1 at the corners",
+          "[ch08]") {
+    auto q = make_quad(corner, edge_u, edge_v);
+    // Dyadic points: a and b are computed exactly.
+    const real points[][2] = {{0, 0}, {1, 0}, {0, 1}, {1, 1}, {0.25, 0.5}, {0.75, 0.125}};
+    for (const auto& ab : points) {
+        INFO("a = " << ab[0] << ", b = " << ab[1]);
+        rt::hit_record rec;
+        REQUIRE(q.hit(down_onto(ab[0], ab[1]), forward, rec));
+        CHECK(rec.u == ab[0]);
+        CHECK(rec.v == ab[1]);
+        // From behind, the same point has the same coordinates: (u, v) belong to the surface.
+        REQUIRE(q.hit(rt::ray(at(ab[0], ab[1]) - vec3(0, 0, 5), vec3(0, 0, 1)), forward, rec));
+        CHECK(rec.u == ab[0]);
+        CHECK(rec.v == ab[1]);
+    }
+
+    // A tilted quad: Q + a u + b v is hit at (a, b) up to rounding. The error of a is that of
+    // the hit point (a few ulps of the coordinates, ~4) divided by the edge length (~1), 64 ulps
+    // allowed.
+    const point3 Q(-3, 1.5, 2);
+    const vec3 u(1, 2, -0.5), v(-0.5, 0.25, 1.5);
+    auto tilted  = make_quad(Q, u, v);
+    const vec3 n = rt::unit_vector(cross(u, v));
+    for (const auto& ab : {std::pair<real, real>(0.3, 0.6), {0.01, 0.99}, {0.5, 0.5}}) {
+        const point3 target = Q + ab.first * u + ab.second * v;
+        const point3 origin = target + 3 * n + vec3(0.125, -0.25, 0.375);
+        rt::hit_record rec;
+        REQUIRE(tilted.hit(rt::ray(origin, target - origin), forward, rec));
+        CHECK(rec.u == Approx(ab.first).margin(64 * eps * 4));
+        CHECK(rec.v == Approx(ab.second).margin(64 * eps * 4));
+    }
 }

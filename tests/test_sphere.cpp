@@ -362,3 +362,313 @@ TEST_CASE("sphere: grazing rays 1e-6 inside the silhouette hit and 1e-6 outside 
         }
     }
 }
+
+// ---------------------------------------------------------------------------------------------
+// Chapter 07: moving spheres. The center moves linearly, C(t) = C0 + t (C1 - C0), over the
+// shutter interval [0, 1]; a ray carries the time it travels at.
+
+namespace {
+
+rt::sphere make_moving(const point3& c0, const point3& c1, real radius) {
+    return rt::sphere(c0, c1, radius, std::make_shared<rt::normal_shading>());
+}
+
+// A point with full-precision coordinates (53 random bits for a double; uniform() alone has
+// 32, and the difference of two such numbers is always exact in a double, which would hide the
+// rounding of C1 - C0) at magnitudes from 1e-3 to 1e3, so that the two ends of a motion often
+// differ by more than a factor 2, where C1 - C0 is rounded.
+point3 full_precision_point(rt::pcg32& rng) {
+    point3 p;
+    for (int a = 0; a < 3; ++a) {
+        const double high = rng.next_u32(), low = rng.next_u32();
+        const double unit      = (high + low * 0x1p-32) * 0x1p-32;  // in [0, 1)
+        const double magnitude = std::pow(10.0, double(rng.next_u32() % 7) - 3);
+        p[a]                   = real((2 * unit - 1) * magnitude);
+    }
+    return p;
+}
+
+// Whether box holds the ball (center, radius), compared exactly: the box's ends are
+// min(C0, C1) - r and max(C0, C1) + r, rounded the same way as center - r and center + r.
+bool holds(const rt::aabb& box, const point3& center, real radius) {
+    for (int a = 0; a < 3; ++a) {
+        const rt::interval& slab = box.axis_interval(a);
+        if (!(slab.min <= center[a] - radius && center[a] + radius <= slab.max)) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+TEST_CASE("sphere: a moving center is C0 at time 0, C1 at time 1 and halfway at 0.5", "[ch07]") {
+    // Dyadic centers: every step is exact.
+    auto s = make_moving(point3(1, 2, 3), point3(3, -2, 4.5), 1);
+    CHECK(exactly(s.center_at(0), point3(1, 2, 3)));
+    CHECK(exactly(s.center_at(1), point3(3, -2, 4.5)));
+    CHECK(exactly(s.center_at(0.5), point3(2, 0, 3.75)));
+    CHECK(exactly(s.center_at(0.25), point3(1.5, 1, 3.375)));
+    // A static sphere never moves, at any time (its velocity is exactly 0).
+    const point3 somewhere(real(0.1), real(-0.7), real(0.3));
+    auto still = make_sphere(somewhere, 1);
+    for (real t : {real(0), real(0.3), real(0.999), real(1)})
+        CHECK(exactly(still.center_at(t), somewhere));
+
+    // Random centers of all magnitudes: the ends are exact though C1 - C0 is rounded (the book's
+    // C0 + 1 (C1 - C0) misses C1 by an ulp in 8 of 10 of these). The midpoint takes two
+    // roundings, in C1 - C0 and in the sum: within an ulp of |C0| + |C1| of (C0 + C1) / 2.
+    rt::pcg32 rng(70, 1);
+    int wrong_ends = 0, wrong_middle = 0;
+    for (int i = 0; i < 10000; ++i) {
+        const point3 c0 = full_precision_point(rng), c1 = full_precision_point(rng);
+        auto m = make_moving(c0, c1, 1);
+        if (!exactly(m.center_at(0), c0) || !exactly(m.center_at(1), c1)) ++wrong_ends;
+        const point3 mid = m.center_at(0.5);
+        for (int a = 0; a < 3; ++a) {
+            const real exact_mid = (c0[a] + c1[a]) / 2;
+            if (std::fabs(mid[a] - exact_mid) > eps * (std::fabs(c0[a]) + std::fabs(c1[a])))
+                ++wrong_middle;
+        }
+    }
+    CHECK(wrong_ends == 0);
+    CHECK(wrong_middle == 0);
+}
+
+TEST_CASE("sphere: a ray at time t hits the sphere where it is at t, not where it was", "[ch07]") {
+    // From (0,0,0) at time 0 to (0,4,0) at time 1, radius 1. A ray along +z at height y = 2
+    // meets the center at time 0.5 head-on (t = 4, as for the static sphere), and passes 2
+    // radii away from it at times 0 and 1.
+    auto s = make_moving(point3(0, 0, 0), point3(0, 4, 0), 1);
+    const point3 origin(0, 2, -5);
+    const vec3 plus_z(0, 0, 1);
+    rt::hit_record rec;
+    REQUIRE(s.hit(rt::ray(origin, plus_z, 0.5), forward, rec));
+    CHECK(rec.t == 4);
+    CHECK(exactly(rec.p, point3(0, 2, -1)));
+    CHECK(exactly(rec.normal, vec3(0, 0, -1)));
+    CHECK_FALSE(s.hit(rt::ray(origin, plus_z, 0), forward, rec));
+    CHECK_FALSE(s.hit(rt::ray(origin, plus_z, 1), forward, rec));
+    // At time 0.375 the center is at y = 1.5: the ray passes 0.5 from it, t = 5 - sqrt(0.75).
+    REQUIRE(s.hit(rt::ray(origin, plus_z, 0.375), forward, rec));
+    CHECK(rec.t == Approx(5 - std::sqrt(real(0.75))).epsilon(4 * eps));
+
+    // Random motions and times. A ray aimed within 0.9 r of the center at time t hits, on the
+    // sphere as it is at t. At another random time the same ray must hit exactly when its line
+    // passes within r of the center at that time (ahead of the origin, which is outside):
+    // checked where the distance is clearly below or above r (by 1e-6 r).
+    rt::pcg32 rng(71, 2);
+    int missed = 0, off = 0, wrong_other = 0, other_hits = 0, other_misses = 0;
+    for (int i = 0; i < 5000; ++i) {
+        const point3 c0 = random_in_cube(rng, 5), c1 = random_in_cube(rng, 5);
+        const real radius = uniform(rng, real(0.1), 1);
+        auto m            = make_moving(c0, c1, radius);
+        const real t      = rng.uniform();
+        const point3 c    = m.center_at(t);
+        const real away   = uniform(rng, 2, 10);
+        const point3 o    = c + away * radius * random_unit(rng);
+        const vec3 d      = c + real(0.9) * radius * random_unit(rng) - o;
+        if (!m.hit(rt::ray(o, d, t), forward, rec)) {
+            ++missed;
+        } else if (off_surface(rec.p, c, radius) > rec.p_error) {
+            ++off;
+        }
+        const real other        = rng.uniform();
+        const vec3 to_center    = m.center_at(other) - o;
+        const real along        = dot(to_center, d) / dot(d, d);
+        const real distance     = (to_center - along * d).length();
+        const bool origin_out   = to_center.length() > radius * (1 + real(1e-6));
+        const bool clearly_hit  = origin_out && along > 0 && distance < radius * (1 - real(1e-6));
+        const bool clearly_miss = origin_out && distance > radius * (1 + real(1e-6));
+        if (!clearly_hit && !clearly_miss) continue;
+        (clearly_hit ? other_hits : other_misses) += 1;
+        if (m.hit(rt::ray(o, d, other), forward, rec) != clearly_hit) ++wrong_other;
+    }
+    CHECK(missed == 0);
+    CHECK(off == 0);
+    CHECK(wrong_other == 0);
+    CHECK(other_hits > 100);  // both outcomes are well represented
+    CHECK(other_misses > 1000);
+}
+
+TEST_CASE("sphere: the bounding box holds a moving sphere at every time", "[ch07]") {
+    rt::pcg32 rng(72, 3);
+    int not_held = 0, not_tight = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const point3 c0 = full_precision_point(rng), c1 = full_precision_point(rng);
+        const real radius  = uniform(rng, real(0.01), 3);
+        auto m             = make_moving(c0, c1, radius);
+        const rt::aabb box = m.bounding_box();
+        // Both ends and 64 times in between, including the ends of the shutter.
+        for (int k = 0; k <= 64; ++k) {
+            const real t = k == 64 ? real(1) : (real(k) + rng.uniform()) / 64;
+            if (!holds(box, m.center_at(t), radius)) ++not_held;
+        }
+        if (!holds(box, c0, radius) || !holds(box, c1, radius)) ++not_held;
+        // And no bigger than that (the box of both end spheres, exactly).
+        for (int a = 0; a < 3; ++a) {
+            if (box.axis_interval(a).min != std::min(c0[a], c1[a]) - radius ||
+                box.axis_interval(a).max != std::max(c0[a], c1[a]) + radius)
+                ++not_tight;
+        }
+    }
+    CHECK(not_held == 0);
+    CHECK(not_tight == 0);
+    // A static sphere's box is center -+ radius.
+    const rt::aabb still = make_sphere(point3(1, -2, 3), 0.5).bounding_box();
+    CHECK(still.x.min == 0.5);
+    CHECK(still.x.max == 1.5);
+    CHECK(still.y.min == -2.5);
+    CHECK(still.z.max == 3.5);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Chapter 08: surface coordinates. u = phi / (2 pi) is the longitude, growing eastward (around
+// +y, from -x through +z, +x, -z), v = theta / pi the latitude from the south pole.
+
+namespace {
+
+struct uv {
+    real u, v;
+};
+
+uv uv_of(const vec3& n) {
+    uv r{};
+    rt::sphere::uv_from_normal(n, r.u, r.v);
+    return r;
+}
+
+// The inverse map: the unit normal at (u, v). theta = pi v from -y; phi = 2 pi u from -x.
+vec3 normal_at(real u, real v) {
+    const real theta = rt::pi * v, phi = 2 * rt::pi * u;
+    return vec3(-std::cos(phi) * std::sin(theta), -std::cos(theta),
+                std::sin(phi) * std::sin(theta));
+}
+
+// Distance between two u values on the circle of longitudes (u = 0 and u = 1 meet at -x).
+real u_distance(real a, real b) {
+    const real d = std::fabs(a - b);
+    return std::min(d, 1 - d);
+}
+
+}  // namespace
+
+TEST_CASE("sphere: uv_from_normal at the poles and at the four points of the equator", "[ch08]") {
+    // v: 0 at the south pole, 1 at the north pole (acos(-1) = pi to the last bit), 1/2 on the
+    // equator (acos(0) = pi/2: one rounding each, so within an ulp).
+    CHECK(uv_of(vec3(0, -1, 0)).v == 0);
+    CHECK(uv_of(vec3(0, 1, 0)).v == Approx(1).epsilon(eps));
+    for (const vec3& n : {vec3(0, -1, 0), vec3(0, 1, 0)}) {
+        // At a pole every longitude is the same point; u must still be a valid coordinate.
+        const real u = uv_of(n).u;
+        CHECK((u >= 0 && u <= 1));
+    }
+    // Eastward from -x: -x at u = 0, +z at 1/4, +x at 1/2, -z at 3/4 (as the book's
+    // get_sphere_uv: <0 0 1> yields 0.25, <0 0 -1> yields 0.75).
+    struct equator_point {
+        vec3 n;
+        real u;
+    };
+    for (const auto& [n, u] :
+         {equator_point{vec3(-1, 0, 0), 0}, equator_point{vec3(0, 0, 1), 0.25},
+          equator_point{vec3(1, 0, 0), 0.5}, equator_point{vec3(0, 0, -1), 0.75}}) {
+        INFO("n = " << n);
+        CHECK(uv_of(n).u == Approx(u).margin(eps));
+        CHECK(uv_of(n).v == Approx(0.5).epsilon(eps));
+    }
+    // Latitude 45 degrees north over +x.
+    const uv north_east = uv_of(rt::unit_vector(vec3(1, 1, 0)));
+    CHECK(north_east.u == Approx(0.5).epsilon(eps));
+    CHECK(north_east.v == Approx(0.75).epsilon(4 * eps));
+}
+
+TEST_CASE("sphere: u grows eastward, so a texture is not mirrored seen from outside", "[ch08]") {
+    // Seen from outside at the point n, with +y up, "right" is east = y x n. A picture whose
+    // u grows to the right reads correctly; one whose u grows to the left is mirrored.
+    rt::pcg32 rng(80, 1);
+    int mirrored = 0, tested = 0;
+    for (int i = 0; i < 10000; ++i) {
+        const vec3 n    = random_unit(rng);
+        const vec3 east = cross(vec3(0, 1, 0), n);
+        if (east.length() < real(0.1)) continue;  // near a pole, east is ill-defined
+        const uv here = uv_of(n), right = uv_of(rt::unit_vector(n + real(1e-4) * east));
+        if (std::fabs(here.u - right.u) > real(0.5)) continue;  // stepped over the seam
+        ++tested;
+        if (!(right.u > here.u)) ++mirrored;
+    }
+    CHECK(tested > 8000);
+    CHECK(mirrored == 0);
+}
+
+TEST_CASE("sphere: uv_from_normal inverts the spherical coordinates", "[ch08]") {
+    // n -> (u, v) -> normal_at(u, v) gives n back. The error is a few ulps of theta and phi,
+    // except near the poles: a unit vector's y is rounded by eps/2 like any coordinate, and
+    // theta = acos(-y) magnifies that by 1 / sin(theta). Hence 16 eps (1 + 1 / sin theta).
+    rt::pcg32 rng(81, 2);
+    int wrong = 0, out_of_range = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const vec3 n = random_unit(rng);
+        const uv c   = uv_of(n);
+        if (!(c.u >= 0 && c.u <= 1 && c.v >= 0 && c.v <= 1)) ++out_of_range;
+        const real sin_theta = std::sqrt(n.x() * n.x() + n.z() * n.z());
+        if ((normal_at(c.u, c.v) - n).length() > 16 * eps * (1 + 1 / sin_theta)) {
+            if (++wrong <= 5) UNSCOPED_INFO("n = " << n << " -> u " << c.u << ", v " << c.v);
+        }
+    }
+    CHECK(wrong == 0);
+    CHECK(out_of_range == 0);
+}
+
+TEST_CASE("sphere: u is continuous across the seam at -x (modulo 1), and stays within 0..1",
+          "[ch08]") {
+    // Just either side of the -x meridian u is near 0 or near 1; on the circle of longitudes
+    // they are neighbours: points at longitudes -+a from the seam are 2a / (2 pi) apart in u,
+    // up to the rounding of phi near pi and of u near 1 (a few eps; 8 eps allowed).
+    for (real latitude : {real(-1.2), real(-0.5), real(0), real(0.4), real(1.5)}) {
+        for (real a : {real(1e-3), real(1e-6), real(1e-9)}) {
+            const real c = std::cos(latitude);
+            const vec3 south_of(-c * std::cos(a), std::sin(latitude), c * std::sin(a));
+            const vec3 north_of(-c * std::cos(a), std::sin(latitude), -c * std::sin(a));
+            const uv p = uv_of(south_of), q = uv_of(north_of);
+            CAPTURE(latitude, a, p.u, q.u);
+            CHECK(p.u < real(0.5));  // the +z side starts at 0
+            CHECK(q.u > real(0.5));  // the -z side ends at 1
+            CHECK(u_distance(p.u, q.u) == Approx(a / rt::pi).margin(8 * eps));
+            CHECK(p.v == q.v);
+        }
+    }
+    // On the seam itself both ends are valid: z = +0 gives u = 0, z = -0 gives u = 1.
+    CHECK(uv_of(vec3(-1, 0, 0)).u == 0);
+    CHECK(uv_of(vec3(-1, 0, -real(0))).u == Approx(1).epsilon(eps));
+}
+
+TEST_CASE("sphere: a hit reports the (u, v) of its outward normal, also on a moving sphere",
+          "[ch08]") {
+    // The texture sticks to the sphere: (u, v) follow the point relative to the center where
+    // it is at the ray's time, from outside and from inside.
+    rt::pcg32 rng(82, 3);
+    int not_own = 0, elsewhere = 0, hits = 0;
+    for (int i = 0; i < 5000; ++i) {
+        const point3 c0   = random_in_cube(rng, 5);
+        const point3 c1   = i % 2 ? c0 : random_in_cube(rng, 5);
+        const real radius = uniform(rng, real(0.1), 3);
+        auto s            = make_moving(c0, c1, radius);
+        const real t      = rng.uniform();
+        const point3 c    = s.center_at(t);
+        const point3 o    = c + (i % 3 == 0 ? real(0.5) : real(4)) * radius * random_unit(rng);
+        const point3 aim  = c + real(0.95) * radius * random_unit(rng);
+        rt::hit_record rec;
+        if (!s.hit(rt::ray(o, aim - o, t), forward, rec)) continue;
+        ++hits;
+        const vec3 outward = rec.front_face ? rec.normal : -rec.normal;
+        const uv own       = uv_of(outward);
+        if (rec.u != own.u || rec.v != own.v) ++not_own;
+        // The same point, from the geometry: (p - C(t)) / r within the rounding of p (its
+        // p_error) and of the normal, magnified near the poles as above.
+        const vec3 from_center = (rec.p - c) / radius;
+        const real sin_theta   = std::sqrt(outward.x() * outward.x() + outward.z() * outward.z());
+        const real tolerance   = 16 * eps * (1 + 1 / sin_theta) + 2 * rec.p_error / radius;
+        if ((normal_at(rec.u, rec.v) - from_center).length() > tolerance) ++elsewhere;
+    }
+    CHECK(hits > 4500);
+    CHECK(not_own == 0);
+    CHECK(elsewhere == 0);
+}

@@ -1,0 +1,255 @@
+// Tests for image_texture.h (chapter 08). Small PNGs are written with stb_image_write into a
+// fresh temporary folder: the lookup picks the nearest texel with u = 0 the left column and
+// v = 1 the top row, clamps u and v (NaN too) to the edge texels, decodes 8-bit sRGB to linear
+// light, and refuses missing, empty, truncated and non-image files with a user_error that names
+// the file.
+#include <stb/stb_image_write.h>
+#include <unistd.h>
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "common/display_encoding.h"
+#include "common/error.h"
+#include "common/image_texture.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using rt::color, rt::point3, rt::real;
+
+// A fresh, empty folder under the system's temporary folder, removed with everything in it.
+class temp_folder {
+  public:
+    explicit temp_folder(const std::string& name)
+        : root(fs::temp_directory_path() /
+               ("rt_test_image_texture_" + name + "_" + std::to_string(::getpid()))) {
+        fs::remove_all(root);
+        fs::create_directories(root);
+    }
+    ~temp_folder() {
+        std::error_code ec;
+        fs::remove_all(root, ec);
+    }
+    temp_folder(const temp_folder&)            = delete;
+    temp_folder& operator=(const temp_folder&) = delete;
+
+    std::string file(const std::string& name) const { return (root / name).string(); }
+
+  private:
+    fs::path root;
+};
+
+// Writes rows top first, `channels` bytes per texel (1 gray, 3 RGB, 4 RGBA).
+void write_png(const std::string& path, int width, int height, int channels,
+               const std::vector<std::uint8_t>& bytes) {
+    REQUIRE(bytes.size() == std::size_t(width * height * channels));
+    REQUIRE(stbi_write_png(path.c_str(), width, height, channels, bytes.data(), width * channels) !=
+            0);
+}
+
+std::string read_bytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+void write_bytes(const std::string& path, const std::string& bytes) {
+    std::ofstream(path, std::ios::binary) << bytes;
+}
+
+// The sRGB decoding curve, written out here from IEC 61966-2-1 rather than taken from
+// display_encoding.h, so that the test checks the texture against the standard.
+double srgb_decode(int byte) {
+    const double c = byte / 255.0;
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+color decoded(int r, int g, int b) {
+    return color(real(srgb_decode(r)), real(srgb_decode(g)), real(srgb_decode(b)));
+}
+
+// The decoded texel against the standard: one rounding to real of a double (the texture keeps
+// a table of srgb_to_linear(i / 255.0) in real), so a few ulps of real.
+bool close(const color& a, const color& b) {
+    const real tolerance = 4 * std::numeric_limits<real>::epsilon();
+    for (int i = 0; i < 3; ++i)
+        if (!(std::fabs(a[i] - b[i]) <= tolerance)) return false;
+    return true;
+}
+
+// A 2 x 2 image, rows top first: red, green / blue, gray 128.
+const std::vector<std::uint8_t> two_by_two = {255, 0, 0,   0,   255, 0,  //
+                                              0,   0, 255, 128, 128, 128};
+const color top_left = decoded(255, 0, 0), top_right = decoded(0, 255, 0),
+            bottom_left = decoded(0, 0, 255), bottom_right = decoded(128, 128, 128);
+
+color at(const rt::image_texture& t, real u, real v) {
+    return t.value(u, v, point3(0, 0, 0));
+}
+
+}  // namespace
+
+TEST_CASE("image_texture: u = 0 is the left column, v = 1 the top row, nearest texel", "[ch08]") {
+    temp_folder dir("lookup");
+    write_png(dir.file("quad.png"), 2, 2, 3, two_by_two);
+    const rt::image_texture t(dir.file("quad.png"));
+    CHECK(t.width() == 2);
+    CHECK(t.height() == 2);
+    // The texel centers, and points just inside each quarter.
+    CHECK(close(at(t, 0.25, 0.75), top_left));
+    CHECK(close(at(t, 0.75, 0.75), top_right));
+    CHECK(close(at(t, 0.25, 0.25), bottom_left));
+    CHECK(close(at(t, 0.75, 0.25), bottom_right));
+    CHECK(close(at(t, 0, 1), top_left));  // the corners of the image
+    CHECK(close(at(t, 1, 1), top_right));
+    CHECK(close(at(t, 0, 0), bottom_left));
+    CHECK(close(at(t, 1, 0), bottom_right));
+    CHECK(close(at(t, real(0.499), real(0.501)), top_left));
+    CHECK(close(at(t, real(0.501), real(0.499)), bottom_right));
+    // Exactly on the texel boundaries: u = 1/2 goes to the right column, v = 1/2 to the lower
+    // row (rows are counted from the top: row = floor((1 - v) H)).
+    CHECK(close(at(t, 0.5, 0.75), top_right));
+    CHECK(close(at(t, 0.25, 0.5), bottom_left));
+    // p plays no part.
+    CHECK(close(t.value(0.25, 0.75, point3(100, -3, 7)), top_left));
+}
+
+TEST_CASE("image_texture: every texel of a larger image is found at its center", "[ch08]") {
+    // 7 x 5 texels (odd sizes, so no boundary falls on a power of two), each with its own color.
+    temp_folder dir("centers");
+    const int w = 7, h = 5;
+    std::vector<std::uint8_t> bytes;
+    for (int row = 0; row < h; ++row) {
+        for (int col = 0; col < w; ++col) {
+            bytes.push_back(std::uint8_t(30 * col));
+            bytes.push_back(std::uint8_t(50 * row));
+            bytes.push_back(std::uint8_t(200 + col + row));
+        }
+    }
+    write_png(dir.file("grid.png"), w, h, 3, bytes);
+    const rt::image_texture t(dir.file("grid.png"));
+    int wrong = 0;
+    for (int row = 0; row < h; ++row) {
+        for (int col = 0; col < w; ++col) {
+            const color want = decoded(30 * col, 50 * row, 200 + col + row);
+            const real u = (real(col) + real(0.5)) / w, v = 1 - (real(row) + real(0.5)) / h;
+            // The center, and 0.4 texel towards each side: the same texel.
+            for (real du : {real(-0.4), real(0), real(0.4)}) {
+                for (real dv : {real(-0.4), real(0), real(0.4)}) {
+                    if (!close(at(t, u + du / w, v + dv / h), want)) ++wrong;
+                }
+            }
+        }
+    }
+    CHECK(wrong == 0);
+}
+
+TEST_CASE("image_texture: u and v outside 0..1, infinite or NaN clamp to the edge texels",
+          "[ch08]") {
+    temp_folder dir("clamp");
+    write_png(dir.file("quad.png"), 2, 2, 3, two_by_two);
+    const rt::image_texture t(dir.file("quad.png"));
+    const real inf = rt::infinity, nan = std::numeric_limits<real>::quiet_NaN();
+    CHECK(close(at(t, -0.5, 0.75), top_left));
+    CHECK(close(at(t, 1.5, 0.75), top_right));
+    CHECK(close(at(t, 0.25, 2), top_left));
+    CHECK(close(at(t, 0.25, -1), bottom_left));
+    CHECK(close(at(t, -inf, inf), top_left));
+    CHECK(close(at(t, inf, -inf), bottom_right));
+    const real huge = std::numeric_limits<real>::max();
+    CHECK(close(at(t, -huge, huge), top_left));
+    // NaN clamps to 0: the left column, the bottom row (documented in image_texture.cpp).
+    CHECK(close(at(t, nan, 0.75), top_left));
+    CHECK(close(at(t, 0.75, nan), bottom_right));
+    CHECK(close(at(t, nan, nan), bottom_left));
+}
+
+TEST_CASE("image_texture: 8-bit sRGB decodes to linear light", "[ch08]") {
+    // A 256 x 1 gray ramp: texel i holds byte i in all three channels.
+    temp_folder dir("srgb");
+    std::vector<std::uint8_t> bytes;
+    for (int i = 0; i < 256; ++i) bytes.insert(bytes.end(), 3, std::uint8_t(i));
+    write_png(dir.file("ramp.png"), 256, 1, 3, bytes);
+    const rt::image_texture t(dir.file("ramp.png"));
+    auto texel = [&](int i) { return at(t, (real(i) + real(0.5)) / 256, 0.5); };
+
+    CHECK(texel(0).x() == 0);
+    CHECK(texel(255).x() == 1);  // (1 + 0.055) / 1.055 = 1 exactly, and 1^2.4 = 1
+    CHECK(texel(128).x() == Approx(0.2158605).epsilon(1e-6));  // not 128/255 = 0.502
+    int wrong = 0, not_increasing = 0, not_inverse = 0;
+    for (int i = 0; i < 256; ++i) {
+        const color c = texel(i);
+        if (!close(c, decoded(i, i, i))) ++wrong;
+        if (i > 0 && !(c.x() > texel(i - 1).x())) ++not_increasing;
+        // The encoding used for output takes it back to the same byte.
+        if (rt::to_srgb8(double(c.x())) != i) ++not_inverse;
+    }
+    CHECK(wrong == 0);
+    CHECK(not_increasing == 0);
+    CHECK(not_inverse == 0);
+}
+
+TEST_CASE("image_texture: gray and RGBA files load as RGB (gray replicated, alpha ignored)",
+          "[ch08]") {
+    temp_folder dir("channels");
+    write_png(dir.file("gray.png"), 2, 1, 1, {64, 200});
+    const rt::image_texture gray(dir.file("gray.png"));
+    CHECK(close(at(gray, 0.25, 0.5), decoded(64, 64, 64)));
+    CHECK(close(at(gray, 0.75, 0.5), decoded(200, 200, 200)));
+    write_png(dir.file("rgba.png"), 1, 2, 4, {10, 20, 30, 0, 250, 128, 5, 255});
+    const rt::image_texture rgba(dir.file("rgba.png"));
+    CHECK(close(at(rgba, 0.5, 0.75), decoded(10, 20, 30)));
+    CHECK(close(at(rgba, 0.5, 0.25), decoded(250, 128, 5)));
+}
+
+TEST_CASE(
+    "image_texture: a missing, empty, truncated or non-image file throws a user_error "
+    "naming it",
+    "[ch08]") {
+    temp_folder dir("errors");
+    // A valid PNG large enough that its first half ends inside the image data: 64 x 64 texels
+    // of varied bytes (little for the compressor to remove).
+    std::vector<std::uint8_t> bytes;
+    std::uint32_t state = 12345;
+    for (int i = 0; i < 64 * 64 * 3; ++i) {
+        state = state * 1664525u + 1013904223u;
+        bytes.push_back(std::uint8_t(state >> 24));
+    }
+    write_png(dir.file("full.png"), 64, 64, 3, bytes);
+    CHECK_NOTHROW(rt::image_texture(dir.file("full.png")));
+    const std::string full = read_bytes(dir.file("full.png"));
+    REQUIRE(full.size() > 10000);
+    write_bytes(dir.file("half.png"), full.substr(0, full.size() / 2));
+    // Only its 12-byte end chunk (IEND) cut off: stb refuses it, but gives no reason of its own.
+    write_bytes(dir.file("no_end.png"), full.substr(0, full.size() - 12));
+    // Cut the small 2 x 2 file in half too: there the cut falls in the header chunks.
+    write_png(dir.file("small.png"), 2, 2, 3, two_by_two);
+    const std::string small = read_bytes(dir.file("small.png"));
+    write_bytes(dir.file("small_half.png"), small.substr(0, small.size() / 2));
+    write_bytes(dir.file("empty.png"), "");
+    write_bytes(dir.file("notes.png"), "These are not the pixels you are looking for.\n");
+
+    for (const std::string name :
+         {"missing.png", "empty.png", "half.png", "no_end.png", "small_half.png", "notes.png"}) {
+        const std::string path = dir.file(name);
+        INFO(path);
+        std::string message;
+        try {
+            rt::image_texture t(path);
+            message = "(loaded " + std::to_string(t.width()) + " x " + std::to_string(t.height()) +
+                      " without an error)";
+        } catch (const rt::user_error& e) {
+            message = e.what();
+        }
+        CHECK_THAT(message, Catch::Contains(path));
+        // And a reason after the name.
+        CHECK_THAT(message, !Catch::EndsWith(": ") && !Catch::EndsWith("'"));
+    }
+}
