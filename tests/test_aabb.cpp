@@ -10,6 +10,7 @@
 #include "common/aabb.h"
 #include "common/rng.h"
 #include "common/sampling.h"
+#include "test_helpers.h"
 
 namespace {
 
@@ -26,20 +27,7 @@ bool hits(const aabb& box, const point3& origin, const vec3& direction, interval
     return box.hit(origin, inv_dir, ray_t);
 }
 
-real uniform(rt::pcg32& rng, real lo, real hi) {
-    return lo + (hi - lo) * rng.uniform();
-}
-
-vec3 random_unit(rt::pcg32& rng) {
-    real u = rng.uniform();
-    return rt::sample_uniform_sphere({u, rng.uniform()});
-}
-
-point3 random_point(rt::pcg32& rng, real half_side) {
-    real x = uniform(rng, -half_side, half_side);
-    real y = uniform(rng, -half_side, half_side);
-    return point3(x, y, uniform(rng, -half_side, half_side));
-}
+using rt_test::random_in_cube, rt_test::random_unit, rt_test::uniform;
 
 // A random integer in [lo, hi].
 int random_int(rt::pcg32& rng, int lo, int hi) {
@@ -105,9 +93,9 @@ TEST_CASE("aabb: the slab test agrees with the exact overlap on random rays", "[
     rt::pcg32 rng(21, 5);
     int checked = 0, wrong_hits = 0, wrong_misses = 0, expected_hits = 0;
     for (int i = 0; i < 100000; ++i) {
-        const point3 corner = random_point(rng, 4);
-        const aabb box(corner, random_point(rng, 4));
-        const point3 o = random_point(rng, 8);
+        const point3 corner = random_in_cube(rng, 4);
+        const aabb box(corner, random_in_cube(rng, 4));
+        const point3 o = random_in_cube(rng, 8);
         // Half the rays aim near the box (so that about half of all rays hit it).
         vec3 d = random_unit(rng);
         if (i % 2 == 0) {
@@ -368,7 +356,7 @@ TEST_CASE("aabb: the empty box is missed by every ray", "[ch07]") {
         CHECK(box.half_area() == 0);
         int hit = 0;
         for (int i = 0; i < 2000; ++i) {
-            const point3 o = i % 10 == 0 ? point3(0, 0, 0) : random_point(rng, 10);
+            const point3 o = i % 10 == 0 ? point3(0, 0, 0) : random_in_cube(rng, 10);
             vec3 d         = random_unit(rng);
             if (i % 7 == 0) d[i % 3] = 0;
             if (i % 11 == 0) d = vec3(0, 0, i % 2 ? real(1) : real(-1));

@@ -16,6 +16,7 @@
 #include "common/normal_shading.h"
 #include "common/rng.h"
 #include "common/sampling.h"
+#include "test_helpers.h"
 
 namespace {
 
@@ -24,13 +25,7 @@ using rt::point3, rt::real, rt::vec3;
 constexpr real eps = std::numeric_limits<real>::epsilon();
 const rt::interval forward(0, rt::infinity);
 
-bool exactly(const vec3& a, const vec3& b) {
-    return a.x() == b.x() && a.y() == b.y() && a.z() == b.z();
-}
-
-std::shared_ptr<rt::material> any_material() {
-    return std::make_shared<rt::normal_shading>();
-}
+using rt_test::any_material, rt_test::exactly, rt_test::random_unit;
 
 // The box [-1, 1.5] x [0.5, 2] x [2, 3] (all three sides different) and its six faces.
 const point3 lo(-1, 0.5, 2), hi(1.5, 2, 3);
@@ -49,12 +44,6 @@ std::vector<face> faces_of(const point3& a, const point3& b) {
             {vec3(0, -1, 0), point3(c.x(), a.y(), c.z())},
             {vec3(0, 0, 1), point3(c.x(), c.y(), b.z())},
             {vec3(0, 0, -1), point3(c.x(), c.y(), a.z())}};
-}
-
-// Each draw in its own statement, so every compiler draws the same numbers in the same order.
-vec3 random_unit(rt::pcg32& rng) {
-    real u = rng.uniform();
-    return rt::sample_uniform_sphere({u, rng.uniform()});
 }
 
 point3 random_in_box(rt::pcg32& rng, const point3& a, const point3& b) {

@@ -19,6 +19,7 @@
 #include "common/rng.h"
 #include "common/sampling.h"
 #include "common/sphere.h"
+#include "test_helpers.h"
 
 namespace {
 
@@ -36,33 +37,20 @@ std::shared_ptr<rt::hittable> sphere_at(const point3& center, real radius) {
     return std::make_shared<rt::sphere>(center, radius, own_material());
 }
 
-real uniform(rt::pcg32& rng, real lo, real hi) {
-    return lo + (hi - lo) * rng.uniform();
-}
+using rt_test::exactly, rt_test::random_in_cube, rt_test::random_unit, rt_test::uniform;
 
 real log_uniform(rt::pcg32& rng, real lo, real hi) {
     return lo * std::pow(hi / lo, rng.uniform());
 }
 
-vec3 random_unit(rt::pcg32& rng) {
-    real u = rng.uniform();
-    return rt::sample_uniform_sphere({u, rng.uniform()});
-}
-
 point3 random_point(rt::pcg32& rng, const point3& center, real half_side) {
-    real x = uniform(rng, -half_side, half_side);
-    real y = uniform(rng, -half_side, half_side);
-    return center + vec3(x, y, uniform(rng, -half_side, half_side));
+    return center + random_in_cube(rng, half_side);
 }
 
 point3 random_point_in(rt::pcg32& rng, const aabb& box) {
     real x = uniform(rng, box.x.min, box.x.max);
     real y = uniform(rng, box.y.min, box.y.max);
     return point3(x, y, uniform(rng, box.z.min, box.z.max));
-}
-
-bool exactly(const vec3& a, const vec3& b) {
-    return a.x() == b.x() && a.y() == b.y() && a.z() == b.z();
 }
 
 bool same_hit(const rt::hit_record& a, const rt::hit_record& b) {

@@ -29,6 +29,7 @@
 #include "common/sampling.h"
 #include "common/sphere.h"
 #include "statistics.h"
+#include "test_helpers.h"
 
 namespace {
 
@@ -37,9 +38,7 @@ using rt::color, rt::point3, rt::real, rt::vec3;
 const rt::interval forward(0, rt::infinity);
 constexpr real eps = std::numeric_limits<real>::epsilon();
 
-bool exactly(const vec3& a, const vec3& b) {
-    return a.x() == b.x() && a.y() == b.y() && a.z() == b.z();
-}
+using rt_test::exactly;
 
 std::uint64_t next_key(rt::pcg32& rng) {
     std::uint64_t high = rng.next_u32();

@@ -14,6 +14,7 @@
 #include "common/integrator.h"
 #include "common/metal.h"
 #include "common/quad.h"
+#include "test_helpers.h"
 
 namespace {
 
@@ -22,9 +23,7 @@ using rt::color, rt::point3, rt::real, rt::vec3;
 const rt::interval forward(0, rt::infinity);
 const color radiance(4, 2, 1);
 
-bool exactly(const vec3& a, const vec3& b) {
-    return a.x() == b.x() && a.y() == b.y() && a.z() == b.z();
-}
+using rt_test::exactly;
 
 // A 2 x 2 light quad in the plane z = 0, centered on the origin, normal u x v = +z.
 std::shared_ptr<rt::hittable> light_quad(const color& L) {

@@ -23,52 +23,14 @@
 #include "common/display_encoding.h"
 #include "common/error.h"
 #include "common/image_io.h"
+#include "test_helpers.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 using rt::color, rt::real;
 
-// A fresh, empty folder under the system's temporary folder, removed with everything in it.
-class temp_folder {
-  public:
-    explicit temp_folder(const std::string& name)
-        : root(fs::temp_directory_path() /
-               ("rt_test_image_io_" + name + "_" + std::to_string(::getpid()))) {
-        fs::remove_all(root);
-        fs::create_directories(root);
-    }
-    ~temp_folder() {
-        std::error_code ec;
-        fs::remove_all(root, ec);
-    }
-    temp_folder(const temp_folder&)            = delete;
-    temp_folder& operator=(const temp_folder&) = delete;
-
-    std::string file(const std::string& name) const { return (root / name).string(); }
-    const fs::path& path() const { return root; }
-
-    // The names in the folder, sorted.
-    std::vector<std::string> entries() const {
-        std::vector<std::string> names;
-        for (const auto& e : fs::directory_iterator(root))
-            names.push_back(e.path().filename().string());
-        std::sort(names.begin(), names.end());
-        return names;
-    }
-
-  private:
-    fs::path root;
-};
-
-std::string read_bytes(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-void write_text(const std::string& path, const std::string& text) {
-    std::ofstream(path, std::ios::binary) << text;
-}
+using rt_test::read_bytes, rt_test::same_bits, rt_test::temp_folder, rt_test::write_bytes;
 
 // An image whose floats exercise every kind of value a PFM must carry: signs, -0, float
 // subnormals, the largest float, and ordinary radiance values; no two pixels alike.
@@ -88,15 +50,10 @@ rt::image test_image(int width, int height) {
     return img;
 }
 
-bool same_bits(const rt::image& a, const rt::image& b) {
-    return a.width() == b.width() && a.height() == b.height() &&
-           std::memcmp(a.data().data(), b.data().data(), a.data().size() * sizeof(float)) == 0;
-}
-
 }  // namespace
 
 TEST_CASE("image_io: a PFM written and read back is the same image bit for bit", "[ch01]") {
-    temp_folder dir("roundtrip");
+    temp_folder dir("image_io", "roundtrip");
     for (auto [w, h] : {std::pair{5, 3}, std::pair{1, 1}, std::pair{1, 7}, std::pair{64, 2}}) {
         INFO(w << " x " << h);
         rt::image img = test_image(w, h);
@@ -107,7 +64,7 @@ TEST_CASE("image_io: a PFM written and read back is the same image bit for bit",
 
 TEST_CASE("image_io: a PFM starts with its header and stores the bottom image row first",
           "[ch01]") {
-    temp_folder dir("layout");
+    temp_folder dir("image_io", "layout");
     const int w = 5, h = 3;
     rt::image img = test_image(w, h);
     rt::write_image(dir.file("a.pfm"), img);
@@ -127,7 +84,7 @@ TEST_CASE("image_io: a PFM starts with its header and stores the bottom image ro
 }
 
 TEST_CASE("image_io: a PNG decodes to the 8-bit sRGB codes of the image", "[ch01]") {
-    temp_folder dir("png");
+    temp_folder dir("image_io", "png");
     const int w = 7, h = 4;
     rt::image img(w, h);
     const real nan = std::numeric_limits<real>::quiet_NaN();
@@ -189,7 +146,7 @@ TEST_CASE("display_encoding: linear_to_srgb follows the sRGB curve and clamps to
 }
 
 TEST_CASE("image_io: writing into a missing folder throws and creates nothing", "[ch01]") {
-    temp_folder dir("missing");
+    temp_folder dir("image_io", "missing");
     for (const char* name : {"no/such/folder/a.pfm", "no/a.png"}) {
         INFO(name);
         CHECK_THROWS_AS(rt::write_image(dir.file(name), test_image(2, 2)), rt::user_error);
@@ -200,7 +157,7 @@ TEST_CASE("image_io: writing into a missing folder throws and creates nothing", 
 }
 
 TEST_CASE("image_io: an unknown extension throws and creates nothing", "[ch01]") {
-    temp_folder dir("extension");
+    temp_folder dir("image_io", "extension");
     for (const char* name : {"a.jpg", "a.exr", "a", "a.pfm.txt"}) {
         INFO(name);
         CHECK_THROWS_AS(rt::write_image(dir.file(name), test_image(2, 2)), rt::user_error);
@@ -213,13 +170,13 @@ TEST_CASE("image_io: an unknown extension throws and creates nothing", "[ch01]")
 
 TEST_CASE("image_io: an existing file is replaced on success and left intact on failure",
           "[ch01]") {
-    temp_folder dir("replace");
+    temp_folder dir("image_io", "replace");
     for (const char* name : {"out.pfm", "out.png"}) {
         INFO(name);
         const std::string path = dir.file(name);
 
         // Success: the new image replaces the old file, and no temporary is left beside it.
-        write_text(path, "old contents");
+        write_bytes(path, "old contents");
         rt::write_image(path, test_image(3, 2));
         CHECK(read_bytes(path) != "old contents");
         if (std::string(name) == "out.pfm") CHECK(same_bits(rt::read_pfm(path), test_image(3, 2)));
@@ -228,10 +185,10 @@ TEST_CASE("image_io: an existing file is replaced on success and left intact on 
         // Failure: the temporary file cannot be created (a folder, not empty, sits where
         // write_image puts it: path + ".tmp." + pid, see image_io.cpp). The write must throw
         // and leave the old file as it was.
-        write_text(path, "old contents");
+        write_bytes(path, "old contents");
         const std::string blocker = path + ".tmp." + std::to_string(::getpid());
         fs::create_directory(blocker);
-        write_text(blocker + "/keep", "x");
+        write_bytes(blocker + "/keep", "x");
         CHECK_THROWS_AS(rt::write_image(path, test_image(3, 2)), rt::user_error);
         CHECK(read_bytes(path) == "old contents");
         fs::remove_all(blocker);
@@ -240,7 +197,7 @@ TEST_CASE("image_io: an existing file is replaced on success and left intact on 
 
     // A folder where the file should go is refused, and left alone with what it holds.
     fs::create_directory(dir.file("folder.pfm"));
-    write_text(dir.file("folder.pfm/inside"), "kept");
+    write_bytes(dir.file("folder.pfm/inside"), "kept");
     CHECK_THROWS_AS(rt::write_image(dir.file("folder.pfm"), test_image(3, 2)), rt::user_error);
     CHECK(fs::is_directory(dir.file("folder.pfm")));
     CHECK(read_bytes(dir.file("folder.pfm/inside")) == "kept");
@@ -253,7 +210,7 @@ TEST_CASE("image_io: oiiotool reads our PFM with the right size, average and ori
         WARN("oiiotool is not on PATH: skipping the check of our PFM by an independent reader");
         return;
     }
-    temp_folder dir("oiiotool");
+    temp_folder dir("image_io", "oiiotool");
     // 6 x 4 with dyadic values, so the averages are exact: red x/8 (mean 5/16), green y/4 (mean
     // 3/8), blue 1 except the top-left pixel, 0 (mean 23/24).
     const int w = 6, h = 4;

@@ -19,33 +19,14 @@
 #include "common/display_encoding.h"
 #include "common/error.h"
 #include "common/image_texture.h"
+#include "test_helpers.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 using rt::color, rt::point3, rt::real;
 
-// A fresh, empty folder under the system's temporary folder, removed with everything in it.
-class temp_folder {
-  public:
-    explicit temp_folder(const std::string& name)
-        : root(fs::temp_directory_path() /
-               ("rt_test_image_texture_" + name + "_" + std::to_string(::getpid()))) {
-        fs::remove_all(root);
-        fs::create_directories(root);
-    }
-    ~temp_folder() {
-        std::error_code ec;
-        fs::remove_all(root, ec);
-    }
-    temp_folder(const temp_folder&)            = delete;
-    temp_folder& operator=(const temp_folder&) = delete;
-
-    std::string file(const std::string& name) const { return (root / name).string(); }
-
-  private:
-    fs::path root;
-};
+using rt_test::read_bytes, rt_test::temp_folder, rt_test::write_bytes;
 
 // Writes rows top first, `channels` bytes per texel (1 gray, 3 RGB, 4 RGBA).
 void write_png(const std::string& path, int width, int height, int channels,
@@ -53,15 +34,6 @@ void write_png(const std::string& path, int width, int height, int channels,
     REQUIRE(bytes.size() == std::size_t(width * height * channels));
     REQUIRE(stbi_write_png(path.c_str(), width, height, channels, bytes.data(), width * channels) !=
             0);
-}
-
-std::string read_bytes(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-void write_bytes(const std::string& path, const std::string& bytes) {
-    std::ofstream(path, std::ios::binary) << bytes;
 }
 
 // The sRGB decoding curve, written out here from IEC 61966-2-1 rather than taken from
@@ -97,7 +69,7 @@ color at(const rt::image_texture& t, real u, real v) {
 }  // namespace
 
 TEST_CASE("image_texture: u = 0 is the left column, v = 1 the top row, nearest texel", "[ch08]") {
-    temp_folder dir("lookup");
+    temp_folder dir("image_texture", "lookup");
     write_png(dir.file("quad.png"), 2, 2, 3, two_by_two);
     const rt::image_texture t(dir.file("quad.png"));
     CHECK(t.width() == 2);
@@ -123,7 +95,7 @@ TEST_CASE("image_texture: u = 0 is the left column, v = 1 the top row, nearest t
 
 TEST_CASE("image_texture: every texel of a larger image is found at its center", "[ch08]") {
     // 7 x 5 texels (odd sizes, so no boundary falls on a power of two), each with its own color.
-    temp_folder dir("centers");
+    temp_folder dir("image_texture", "centers");
     const int w = 7, h = 5;
     std::vector<std::uint8_t> bytes;
     for (int row = 0; row < h; ++row) {
@@ -153,7 +125,7 @@ TEST_CASE("image_texture: every texel of a larger image is found at its center",
 
 TEST_CASE("image_texture: u and v outside 0..1, infinite or NaN clamp to the edge texels",
           "[ch08]") {
-    temp_folder dir("clamp");
+    temp_folder dir("image_texture", "clamp");
     write_png(dir.file("quad.png"), 2, 2, 3, two_by_two);
     const rt::image_texture t(dir.file("quad.png"));
     const real inf = rt::infinity, nan = std::numeric_limits<real>::quiet_NaN();
@@ -173,7 +145,7 @@ TEST_CASE("image_texture: u and v outside 0..1, infinite or NaN clamp to the edg
 
 TEST_CASE("image_texture: 8-bit sRGB decodes to linear light", "[ch08]") {
     // A 256 x 1 gray ramp: texel i holds byte i in all three channels.
-    temp_folder dir("srgb");
+    temp_folder dir("image_texture", "srgb");
     std::vector<std::uint8_t> bytes;
     for (int i = 0; i < 256; ++i) bytes.insert(bytes.end(), 3, std::uint8_t(i));
     write_png(dir.file("ramp.png"), 256, 1, 3, bytes);
@@ -198,7 +170,7 @@ TEST_CASE("image_texture: 8-bit sRGB decodes to linear light", "[ch08]") {
 
 TEST_CASE("image_texture: gray and RGBA files load as RGB (gray replicated, alpha ignored)",
           "[ch08]") {
-    temp_folder dir("channels");
+    temp_folder dir("image_texture", "channels");
     write_png(dir.file("gray.png"), 2, 1, 1, {64, 200});
     const rt::image_texture gray(dir.file("gray.png"));
     CHECK(close(at(gray, 0.25, 0.5), decoded(64, 64, 64)));
@@ -213,7 +185,7 @@ TEST_CASE(
     "image_texture: a missing, empty, truncated or non-image file throws a user_error "
     "naming it",
     "[ch08]") {
-    temp_folder dir("errors");
+    temp_folder dir("image_texture", "errors");
     // A valid PNG large enough that its first half ends inside the image data: 64 x 64 texels
     // of varied bytes (little for the compressor to remove).
     std::vector<std::uint8_t> bytes;

@@ -27,6 +27,7 @@
 #include "common/rng.h"
 #include "common/sampling.h"
 #include "common/sphere.h"
+#include "test_helpers.h"
 
 namespace {
 
@@ -37,53 +38,11 @@ const rt::interval forward(0, rt::infinity);
 const axis all_axes[]      = {axis::x, axis::y, axis::z};
 const real listed_angles[] = {0, 45, 90, 180, -18, 15, 137.5};
 
-bool exactly(const vec3& a, const vec3& b) {
-    return a.x() == b.x() && a.y() == b.y() && a.z() == b.z();
-}
+using rt_test::any_material, rt_test::exactly, rt_test::log_uniform, rt_test::random_in_cube,
+    rt_test::random_in_hemisphere, rt_test::random_tangent, rt_test::random_unit, rt_test::uniform;
 
 const char* name(axis a) {
     return a == axis::x ? "x" : (a == axis::y ? "y" : "z");
-}
-
-std::shared_ptr<rt::material> any_material() {
-    return std::make_shared<rt::normal_shading>();
-}
-
-// Each draw in its own statement, so every compiler draws the same numbers in the same order.
-real uniform(rt::pcg32& rng, real lo, real hi) {
-    return lo + (hi - lo) * rng.uniform();
-}
-
-real log_uniform(rt::pcg32& rng, real lo_exponent, real hi_exponent) {
-    return std::pow(real(10), uniform(rng, lo_exponent, hi_exponent));
-}
-
-vec3 random_unit(rt::pcg32& rng) {
-    real u = rng.uniform();
-    return rt::sample_uniform_sphere({u, rng.uniform()});
-}
-
-vec3 random_in_cube(rt::pcg32& rng, real half_side) {
-    real x = uniform(rng, -half_side, half_side);
-    real y = uniform(rng, -half_side, half_side);
-    return vec3(x, y, uniform(rng, -half_side, half_side));
-}
-
-// A unit direction with dot(d, n) > min_cos.
-vec3 random_in_hemisphere(rt::pcg32& rng, const vec3& n, real min_cos = 0) {
-    for (;;) {
-        vec3 d = random_unit(rng);
-        if (dot(d, n) < 0) d = -d;
-        if (dot(d, n) > min_cos) return d;
-    }
-}
-
-// A unit direction in the tangent plane of the unit normal n.
-vec3 random_tangent(rt::pcg32& rng, const vec3& n) {
-    for (;;) {
-        vec3 c = cross(n, random_unit(rng));
-        if (c.length() > real(0.1)) return rt::unit_vector(c);
-    }
 }
 
 axis random_axis(rt::pcg32& rng) {
@@ -92,14 +51,7 @@ axis random_axis(rt::pcg32& rng) {
 
 // The hard cases go to 1e3 from the origin with boxes of 1e-2, beyond float's 24 bits: they
 // test the double build, the default. A float build says so instead of failing.
-bool needs_double() {
-    if constexpr (std::numeric_limits<real>::digits >= 53) {
-        return false;
-    } else {
-        WARN("skipped: this hard case needs real = double");
-        return true;
-    }
-}
+using rt_test::needs_double;
 
 // A box [lo, hi] and one of its faces, in the box's own space.
 struct box_face {

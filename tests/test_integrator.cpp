@@ -22,6 +22,7 @@
 #include "common/rng.h"
 #include "common/sampling.h"
 #include "common/sphere.h"
+#include "test_helpers.h"
 
 namespace {
 
@@ -29,9 +30,7 @@ using rt::color, rt::point3, rt::real, rt::vec3;
 
 const rt::interval forward(0, rt::infinity);
 
-bool exactly(const vec3& a, const vec3& b) {
-    return a.x() == b.x() && a.y() == b.y() && a.z() == b.z();
-}
+using rt_test::exactly;
 
 // A uniform background of 1 and a square camera looking from `from` at `at`.
 rt::scene furnace(std::shared_ptr<rt::hittable> object, const point3& from, const point3& at,

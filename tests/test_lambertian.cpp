@@ -16,19 +16,13 @@
 #include "common/sampling.h"
 #include "common/texture.h"
 #include "statistics.h"
+#include "test_helpers.h"
 
 namespace {
 
 using rt::color, rt::point3, rt::real, rt::vec3;
 
-bool exactly(const vec3& a, const vec3& b) {
-    return a.x() == b.x() && a.y() == b.y() && a.z() == b.z();
-}
-
-vec3 random_unit(rt::pcg32& rng) {
-    real u = rng.uniform();
-    return rt::sample_uniform_sphere({u, rng.uniform()});
-}
+using rt_test::exactly, rt_test::random_unit;
 
 // A hit at p with normal n (facing the incoming ray), as a shape would report it.
 rt::hit_record hit_at(const point3& p, const vec3& n, bool front_face) {

@@ -5,14 +5,13 @@
 
 #include "common/noise_texture.h"
 #include "common/rng.h"
+#include "test_helpers.h"
 
 namespace {
 
 using rt::color, rt::point3, rt::real;
 
-real uniform(rt::pcg32& rng, real lo, real hi) {
-    return lo + (hi - lo) * rng.uniform();
-}
+using rt_test::uniform;
 
 }  // namespace
 

@@ -26,6 +26,7 @@
 #include "common/perlin.h"
 #include "common/rng.h"
 #include "common/sampling.h"
+#include "test_helpers.h"
 
 namespace {
 
@@ -37,22 +38,13 @@ constexpr real rounding  = 16 * eps;
 const real noise_bound   = std::sqrt(real(3)) / 2;
 constexpr real lipschitz = 10;
 
-real uniform(rt::pcg32& rng, real lo, real hi) {
-    return lo + (hi - lo) * rng.uniform();
-}
-
-vec3 random_unit(rt::pcg32& rng) {
-    real u = rng.uniform();
-    return rt::sample_uniform_sphere({u, rng.uniform()});
-}
+using rt_test::random_in_cube, rt_test::random_unit, rt_test::uniform;
 
 // Points at every scale the noise meets: near the origin, at +-100, and near +-1e6 (where a
 // double still keeps 2^-33 of the fractional part; a float keeps 1/16).
 point3 random_point(rt::pcg32& rng, int i) {
     const real reach = i % 3 == 0 ? real(2) : (i % 3 == 1 ? real(100) : real(1e6));
-    real x           = uniform(rng, -reach, reach);
-    real y           = uniform(rng, -reach, reach);
-    return point3(x, y, uniform(rng, -reach, reach));
+    return random_in_cube(rng, reach);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "common/error.h"
 #include "common/normal_shading.h"
 #include "common/quad.h"
+#include "test_helpers.h"
 
 namespace {
 
@@ -23,9 +24,7 @@ rt::quad make_quad(const point3& Q, const vec3& u, const vec3& v) {
     return rt::quad(Q, u, v, std::make_shared<rt::normal_shading>());
 }
 
-bool exactly(const vec3& a, const vec3& b) {
-    return a.x() == b.x() && a.y() == b.y() && a.z() == b.z();
-}
+using rt_test::exactly;
 
 // The quad Q + a u + b v in the plane z = 3: Q = (1, -2, 3), u = (2, 0, 0), v = (0, 4, 0), so
 // x = 1 + 2a, y = -2 + 4b, and its normal unit(u x v) is +z.

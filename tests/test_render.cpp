@@ -15,6 +15,7 @@
 #include "common/quad.h"
 #include "common/render.h"
 #include "common/sphere.h"
+#include "test_helpers.h"
 
 namespace {
 
@@ -51,10 +52,7 @@ rt::render_settings small(std::uint64_t seed, int threads) {
     return settings;
 }
 
-bool same_bits(const rt::image& a, const rt::image& b) {
-    return a.width() == b.width() && a.height() == b.height() &&
-           std::memcmp(a.data().data(), b.data().data(), a.data().size() * sizeof(float)) == 0;
-}
+using rt_test::same_bits;
 
 int count_non_finite(const rt::image& img) {
     int n = 0;

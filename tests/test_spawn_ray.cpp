@@ -22,6 +22,7 @@
 #include "common/rng.h"
 #include "common/sampling.h"
 #include "common/sphere.h"
+#include "test_helpers.h"
 
 namespace {
 
@@ -29,42 +30,8 @@ using rt::point3, rt::real, rt::vec3;
 
 const rt::interval forward(0, rt::infinity);
 
-// Each draw in its own statement, so every compiler draws the same numbers in the same order.
-real uniform(rt::pcg32& rng, real lo, real hi) {
-    return lo + (hi - lo) * rng.uniform();
-}
-
-real log_uniform(rt::pcg32& rng, real lo_exponent, real hi_exponent) {
-    return std::pow(real(10), uniform(rng, lo_exponent, hi_exponent));
-}
-
-vec3 random_unit(rt::pcg32& rng) {
-    real u = rng.uniform();
-    return rt::sample_uniform_sphere({u, rng.uniform()});
-}
-
-vec3 random_in_cube(rt::pcg32& rng, real half_side) {
-    real x = uniform(rng, -half_side, half_side);
-    real y = uniform(rng, -half_side, half_side);
-    return vec3(x, y, uniform(rng, -half_side, half_side));
-}
-
-// A unit direction with dot(d, n) >= min_cos, uniform over that cap.
-vec3 random_in_hemisphere(rt::pcg32& rng, const vec3& n, real min_cos = 0) {
-    for (;;) {
-        vec3 d = random_unit(rng);
-        if (dot(d, n) < 0) d = -d;
-        if (dot(d, n) > min_cos) return d;
-    }
-}
-
-// A unit direction in the tangent plane of the unit normal n.
-vec3 random_tangent(rt::pcg32& rng, const vec3& n) {
-    for (;;) {
-        vec3 c = cross(n, random_unit(rng));
-        if (c.length() > real(0.1)) return rt::unit_vector(c);
-    }
-}
+using rt_test::log_uniform, rt_test::random_in_cube, rt_test::random_in_hemisphere,
+    rt_test::random_tangent, rt_test::random_unit, rt_test::uniform;
 
 // Counts of failures, and the first one in words for the failure message.
 struct tally {
@@ -86,14 +53,7 @@ std::ostream& operator<<(std::ostream& out, const tally& t) {
 // The hard cases reach 1e6..1e7 radii and margins of 1e-6 radii, beyond float's 24 bits (its
 // ulp at 1e6 is 0.06): they test the double build, the default. A float build (RT_SCALAR=float)
 // says so instead of failing on arithmetic it cannot do.
-bool needs_double() {
-    if constexpr (std::numeric_limits<real>::digits >= 53) {
-        return false;
-    } else {
-        WARN("skipped: this hard case needs real = double");
-        return true;
-    }
-}
+using rt_test::needs_double;
 
 }  // namespace
 

@@ -13,6 +13,7 @@
 #include "common/rng.h"
 #include "common/sampling.h"
 #include "common/sphere.h"
+#include "test_helpers.h"
 
 namespace {
 
@@ -25,9 +26,8 @@ rt::sphere make_sphere(const point3& center, real radius) {
     return rt::sphere(center, radius, std::make_shared<rt::normal_shading>());
 }
 
-bool exactly(const vec3& a, const vec3& b) {
-    return a.x() == b.x() && a.y() == b.y() && a.z() == b.z();
-}
+using rt_test::exactly, rt_test::random_in_cube, rt_test::random_tangent, rt_test::random_unit,
+    rt_test::uniform;
 
 bool finite(const vec3& v) {
     return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
@@ -57,31 +57,6 @@ bool is_sentinel(const rt::hit_record& rec) {
            rec.p_error == 42 && !rec.front_face && rec.mat == nullptr;
 }
 
-// Each draw in its own statement: the order of evaluation of function arguments is unspecified,
-// and the tests must draw the same numbers with every compiler.
-real uniform(rt::pcg32& rng, real lo, real hi) {
-    return lo + (hi - lo) * rng.uniform();
-}
-
-vec3 random_unit(rt::pcg32& rng) {
-    real u = rng.uniform();
-    return rt::sample_uniform_sphere({u, rng.uniform()});
-}
-
-vec3 random_in_cube(rt::pcg32& rng, real half_side) {
-    real x = uniform(rng, -half_side, half_side);
-    real y = uniform(rng, -half_side, half_side);
-    return vec3(x, y, uniform(rng, -half_side, half_side));
-}
-
-// A unit vector perpendicular to the unit vector d, in a random direction.
-vec3 random_perpendicular(const vec3& d, rt::pcg32& rng) {
-    for (;;) {
-        vec3 c = cross(d, random_unit(rng));
-        if (c.length() > real(0.1)) return rt::unit_vector(c);
-    }
-}
-
 // Distance of p from the surface of the sphere (center, radius).
 real off_surface(const point3& p, const point3& center, real radius) {
     return std::fabs((p - center).length() - radius);
@@ -90,14 +65,7 @@ real off_surface(const point3& p, const point3& center, real radius) {
 // The hard cases reach 1e6..1e7 radii and margins of 1e-6 radii, beyond float's 24 bits (its
 // ulp at 1e6 is 0.06): they test the double build, the default. A float build (RT_SCALAR=float)
 // says so instead of failing on arithmetic it cannot do.
-bool needs_double() {
-    if constexpr (std::numeric_limits<real>::digits >= 53) {
-        return false;
-    } else {
-        WARN("skipped: this hard case needs real = double");
-        return true;
-    }
-}
+using rt_test::needs_double;
 
 }  // namespace
 
@@ -300,7 +268,7 @@ TEST_CASE(
                 }
 
                 // Aim 0.99 and 1.01 radii off the center, across the line of sight.
-                vec3 across = random_perpendicular(toward_eye, rng);
+                vec3 across = random_tangent(rng, toward_eye);
                 point3 in   = center + real(0.99) * radius * across;
                 point3 out  = center + real(1.01) * radius * across;
                 if (!s.hit(rt::ray(eye, in - eye), forward, rec))
@@ -339,7 +307,7 @@ TEST_CASE("sphere: grazing rays 1e-6 inside the silhouette hit and 1e-6 outside 
             for (int i = 0; i < 1000; ++i) {
                 vec3 toward_eye = random_unit(rng);
                 point3 eye      = center + distance * radius * toward_eye;
-                vec3 across     = random_perpendicular(toward_eye, rng);
+                vec3 across     = random_tangent(rng, toward_eye);
                 point3 in       = center + (1 - real(1e-6)) * radius * across;
                 point3 out      = center + (1 + real(1e-6)) * radius * across;
                 rt::hit_record rec;

@@ -11,14 +11,13 @@
 
 #include "common/error.h"
 #include "common/texture.h"
+#include "test_helpers.h"
 
 namespace {
 
 using rt::color, rt::point3, rt::real, rt::vec3;
 
-bool exactly(const vec3& a, const vec3& b) {
-    return a.x() == b.x() && a.y() == b.y() && a.z() == b.z();
-}
+using rt_test::exactly;
 
 const color white(1, 1, 1), black(0, 0, 0);
 

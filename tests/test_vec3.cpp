@@ -19,7 +19,10 @@ bool equal(const vec3& a, const vec3& b) {
 }
 
 vec3 random_vec3(rt::pcg32& rng, real scale) {
-    return scale * vec3(2 * rng.uniform() - 1, 2 * rng.uniform() - 1, 2 * rng.uniform() - 1);
+    // One draw per statement: the order of arguments' evaluation is unspecified in C++.
+    real x = 2 * rng.uniform() - 1;
+    real y = 2 * rng.uniform() - 1;
+    return scale * vec3(x, y, 2 * rng.uniform() - 1);
 }
 
 }  // namespace

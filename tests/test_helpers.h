@@ -1,0 +1,140 @@
+// Small helpers that several test files share: random draws, exact comparisons, the float-build
+// guard of the hard cases, and temporary files. Every random helper makes each draw in a statement
+// of its own (the order in which function arguments are evaluated is unspecified), so that every
+// compiler draws the same numbers in the same order; a test's seed then fixes all of its cases.
+#pragma once
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <memory>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "common/image.h"
+#include "common/material.h"
+#include "common/normal_shading.h"
+#include "common/rng.h"
+#include "common/sampling.h"
+#include "common/vec3.h"
+
+namespace rt_test {
+
+// A real uniform in [lo, hi): one draw, the building block of the random cases.
+inline rt::real uniform(rt::pcg32& rng, rt::real lo, rt::real hi) {
+    return lo + (hi - lo) * rng.uniform();
+}
+
+// 10 to a power uniform in [lo_exponent, hi_exponent): scales spread evenly over the decades.
+inline rt::real log_uniform(rt::pcg32& rng, rt::real lo_exponent, rt::real hi_exponent) {
+    return std::pow(rt::real(10), uniform(rng, lo_exponent, hi_exponent));
+}
+
+// A unit vector uniform on the sphere: two draws, the first one for u.
+inline rt::vec3 random_unit(rt::pcg32& rng) {
+    rt::real u = rng.uniform();
+    return rt::sample_uniform_sphere({u, rng.uniform()});
+}
+
+// A point uniform in the cube [-half_side, half_side]^3: three draws, x, then y, then z.
+inline rt::vec3 random_in_cube(rt::pcg32& rng, rt::real half_side) {
+    rt::real x = uniform(rng, -half_side, half_side);
+    rt::real y = uniform(rng, -half_side, half_side);
+    return rt::vec3(x, y, uniform(rng, -half_side, half_side));
+}
+
+// A unit direction with dot(d, n) > min_cos, uniform over that cap: new rays leaving a surface.
+inline rt::vec3 random_in_hemisphere(rt::pcg32& rng, const rt::vec3& n, rt::real min_cos = 0) {
+    for (;;) {
+        rt::vec3 d = random_unit(rng);
+        if (dot(d, n) < 0) d = -d;
+        if (dot(d, n) > min_cos) return d;
+    }
+}
+
+// A unit direction in the tangent plane of the unit normal n (perpendicular to n), at random.
+inline rt::vec3 random_tangent(rt::pcg32& rng, const rt::vec3& n) {
+    for (;;) {
+        rt::vec3 c = cross(n, random_unit(rng));
+        if (c.length() > rt::real(0.1)) return rt::unit_vector(c);
+    }
+}
+
+// Component-wise ==, for results that must come out bit for bit the same.
+inline bool exactly(const rt::vec3& a, const rt::vec3& b) {
+    return a.x() == b.x() && a.y() == b.y() && a.z() == b.z();
+}
+
+// A fresh material for a shape whose material the test never looks at.
+inline std::shared_ptr<rt::material> any_material() {
+    return std::make_shared<rt::normal_shading>();
+}
+
+// True (with a warning that says so) in a float build, whose 24 bits the hard cases outrun.
+inline bool needs_double() {
+    if constexpr (std::numeric_limits<rt::real>::digits >= 53) {
+        return false;
+    } else {
+        WARN("skipped: this hard case needs real = double");
+        return true;
+    }
+}
+
+// Whether two images have the same size and the same float bits, -0 and NaN payloads included.
+inline bool same_bits(const rt::image& a, const rt::image& b) {
+    return a.width() == b.width() && a.height() == b.height() &&
+           std::memcmp(a.data().data(), b.data().data(), a.data().size() * sizeof(float)) == 0;
+}
+
+// The whole content of a file, byte for byte ("" if it cannot be read).
+inline std::string read_bytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// Writes `bytes` as the whole content of a file, to set up a file that a test then reads.
+inline void write_bytes(const std::string& path, const std::string& bytes) {
+    std::ofstream(path, std::ios::binary) << bytes;
+}
+
+// A fresh, empty folder under the system's temporary folder, removed with everything in it.
+class temp_folder {
+  public:
+    temp_folder(const std::string& suite, const std::string& name)
+        : root(std::filesystem::temp_directory_path() /
+               ("rt_test_" + suite + "_" + name + "_" + std::to_string(::getpid()))) {
+        std::filesystem::remove_all(root);
+        std::filesystem::create_directories(root);
+    }
+    ~temp_folder() {
+        std::error_code ec;
+        std::filesystem::remove_all(root, ec);
+    }
+    temp_folder(const temp_folder&)            = delete;
+    temp_folder& operator=(const temp_folder&) = delete;
+
+    std::string file(const std::string& name) const { return (root / name).string(); }
+    const std::filesystem::path& path() const { return root; }
+
+    // The names in the folder, sorted.
+    std::vector<std::string> entries() const {
+        std::vector<std::string> names;
+        for (const auto& e : std::filesystem::directory_iterator(root))
+            names.push_back(e.path().filename().string());
+        std::sort(names.begin(), names.end());
+        return names;
+    }
+
+  private:
+    std::filesystem::path root;
+};
+
+}  // namespace rt_test
