@@ -13,7 +13,12 @@ sphere::sphere(const point3& center, real radius, std::shared_ptr<material> m)
     : sphere(center, center, radius, std::move(m)) {}
 
 sphere::sphere(const point3& c0, const point3& c1, real radius, std::shared_ptr<material> m)
-    : center0(c0), center1(c1), velocity(c1 - c0), radius_(radius), mat(std::move(m)) {
+    : center0(c0),
+      center1(c1),
+      velocity(c1 - c0),
+      is_moving(!(c0.x() == c1.x() && c0.y() == c1.y() && c0.z() == c1.z())),
+      radius_(radius),
+      mat(std::move(m)) {
     if (!(radius > 0) || !std::isfinite(radius)) {
         std::ostringstream message;
         message << "sphere radius must be positive and finite, got " << radius;
@@ -25,7 +30,8 @@ sphere::sphere(const point3& c0, const point3& c1, real radius, std::shared_ptr<
 bool sphere::hit(const ray& r, interval ray_t, hit_record& rec) const {
     // With f = A - C: a t^2 + 2 b t + c = 0, a = b.b, b = f.b, c = f.f - r^2.
     const vec3& d = r.direction();
-    point3 center = center_at(r.time());
+    // Static spheres (most of them) skip the motion: the branch is predictable in any list.
+    point3 center = is_moving ? center_at(r.time()) : center0;
     vec3 f        = r.origin() - center;
     real a        = dot(d, d);
     real b        = dot(f, d);

@@ -48,7 +48,8 @@ class sphere : public hittable {
                                       real a2_discriminant) const;
 
     point3 center0, center1;
-    vec3 velocity;  // C1 - C0: zero for a static sphere
+    vec3 velocity;   // C1 - C0: zero for a static sphere
+    bool is_moving;  // C1 != C0
     real radius_;
     std::shared_ptr<material> mat;
 };
