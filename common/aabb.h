@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "interval.h"
@@ -61,7 +62,7 @@ class aabb {
             real t0            = (ax.min - origin[axis]) * inv_dir[axis];
             real t1            = (ax.max - origin[axis]) * inv_dir[axis];
             if (inv_dir[axis] < 0) std::swap(t0, t1);
-            t1 *= robust_factor;
+            t1 *= t1 > 0 ? robust_factor : 2 - robust_factor;  // later, also when t1 < 0
             if (t0 > ray_t.min) ray_t.min = t0;
             if (t1 < ray_t.max) ray_t.max = t1;
             if (ray_t.max < ray_t.min) return false;

@@ -22,12 +22,18 @@ std::vector<std::shared_ptr<hittable>> box_faces(const point3& a, const point3& 
 
     std::vector<std::shared_ptr<hittable>> sides;
     // Each face lists its edges so that u x v points outwards.
-    sides.push_back(std::make_shared<quad>(point3(lo.x(), lo.y(), hi.z()), dx, dy, mat));  // front +z
-    sides.push_back(std::make_shared<quad>(point3(hi.x(), lo.y(), hi.z()), -dz, dy, mat)); // right +x
-    sides.push_back(std::make_shared<quad>(point3(hi.x(), lo.y(), lo.z()), -dx, dy, mat)); // back -z
-    sides.push_back(std::make_shared<quad>(point3(lo.x(), lo.y(), lo.z()), dz, dy, mat));  // left -x
-    sides.push_back(std::make_shared<quad>(point3(lo.x(), hi.y(), hi.z()), dx, -dz, mat)); // top +y
-    sides.push_back(std::make_shared<quad>(point3(lo.x(), lo.y(), lo.z()), dx, dz, mat));  // bottom -y
+    sides.push_back(
+        std::make_shared<quad>(point3(lo.x(), lo.y(), hi.z()), dx, dy, mat));  // front +z
+    sides.push_back(
+        std::make_shared<quad>(point3(hi.x(), lo.y(), hi.z()), -dz, dy, mat));  // right +x
+    sides.push_back(
+        std::make_shared<quad>(point3(hi.x(), lo.y(), lo.z()), -dx, dy, mat));  // back -z
+    sides.push_back(
+        std::make_shared<quad>(point3(lo.x(), lo.y(), lo.z()), dz, dy, mat));  // left -x
+    sides.push_back(
+        std::make_shared<quad>(point3(lo.x(), hi.y(), hi.z()), dx, -dz, mat));  // top +y
+    sides.push_back(
+        std::make_shared<quad>(point3(lo.x(), lo.y(), lo.z()), dx, dz, mat));  // bottom -y
     return sides;
 }
 

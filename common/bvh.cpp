@@ -2,16 +2,18 @@
 
 #include <algorithm>
 #include <array>
+#include <stdexcept>
+#include <string>
 
 namespace rt {
 
 namespace {
 
-constexpr int bin_count            = 12;  // SAH candidates per axis; more buys little
-constexpr int max_leaf_objects     = 4;
-constexpr real traversal_cost      = 1;   // relative to one object test
-constexpr int max_traversal_depth  = 64;  // stack size: above what build() can make
-constexpr int max_sah_depth        = 40;  // below it, median splits: at most log2(n) more levels
+constexpr int bin_count           = 12;  // SAH candidates per axis; more buys little
+constexpr int max_leaf_objects    = 4;
+constexpr real traversal_cost     = 1;   // relative to one object test
+constexpr int max_traversal_depth = 64;  // stack size: above what build() can make
+constexpr int max_sah_depth       = 40;  // below it, median splits: at most log2(n) more levels
 
 // The box of one point, not padded: bounds of centroids must see coincident centroids as
 // coincident (a padded point box is 1e-4 wide, so all-equal centroids would look spread out and
@@ -40,6 +42,11 @@ bvh::bvh(std::vector<std::shared_ptr<hittable>> input) {
     }
     nodes.reserve(2 * input.size());
     if (!items.empty()) build(items, 0, items.size(), 1);
+
+    // Traversal keeps pending siblings on a fixed stack: the tree must fit it (build() bounds the
+    // depth by about 40 + log2(n), so this can only fail beyond ~2^23 pathological objects).
+    if (depth() > max_traversal_depth)
+        throw std::logic_error("bvh: tree depth " + std::to_string(depth()) + " exceeds the stack");
 
     objects.reserve(items.size());
     for (const auto& item : items) objects.push_back(input[item.object]);
@@ -81,7 +88,7 @@ std::uint32_t bvh::build(std::vector<build_item>& items, std::size_t begin, std:
     std::array<aabb, bin_count> bin_box;
     std::array<std::size_t, bin_count> bin_objects{};
     for (std::size_t i = begin; i < end; ++i) {
-        int b = bin_of(items[i]);
+        int b      = bin_of(items[i]);
         bin_box[b] = aabb(bin_box[b], items[i].box);
         ++bin_objects[b];
     }
@@ -98,16 +105,17 @@ std::uint32_t bvh::build(std::vector<build_item>& items, std::size_t begin, std:
         right_count[b] = right_n;
     }
     aabb left;
-    std::size_t left_n = 0;
-    real best_cost     = infinity;
-    int best_split     = 1;  // objects in bins < best_split go left
+    std::size_t left_n     = 0;
+    real best_cost         = infinity;
+    int best_split         = 1;  // objects in bins < best_split go left
     const real parent_area = bounds.half_area();
     for (int b = 1; b < bin_count; ++b) {
         left = aabb(left, bin_box[b - 1]);
         left_n += bin_objects[b - 1];
         if (left_n == 0 || right_count[b] == 0) continue;
-        real cost = traversal_cost + (left.half_area() * real(left_n) +
-                                      right_area[b] * real(right_count[b])) / parent_area;
+        real cost =
+            traversal_cost +
+            (left.half_area() * real(left_n) + right_area[b] * real(right_count[b])) / parent_area;
         if (cost < best_cost) {
             best_cost  = cost;
             best_split = b;
@@ -119,9 +127,8 @@ std::uint32_t bvh::build(std::vector<build_item>& items, std::size_t begin, std:
     auto first = items.begin() + std::ptrdiff_t(begin), last = items.begin() + std::ptrdiff_t(end);
     std::size_t mid;
     if (level < max_sah_depth && best_cost < infinity) {
-        auto middle = std::partition(first, last, [&](const build_item& item) {
-            return bin_of(item) < best_split;
-        });
+        auto middle = std::partition(
+            first, last, [&](const build_item& item) { return bin_of(item) < best_split; });
         mid = std::size_t(middle - items.begin());
     } else {
         // A pathological spread (say, exponentially spaced objects) could make SAH splits peel
@@ -146,9 +153,9 @@ bool bvh::hit(const ray& r, interval ray_t, hit_record& rec) const {
     const bool dir_negative[3] = {inv_dir.x() < 0, inv_dir.y() < 0, inv_dir.z() < 0};
 
     std::uint32_t stack[max_traversal_depth];
-    int top             = 0;
+    int top               = 0;
     std::uint32_t current = 0;
-    bool hit_anything   = false;
+    bool hit_anything     = false;
     while (true) {
         const node& n = nodes[current];
         if (n.box.hit(r.origin(), inv_dir, ray_t)) {
@@ -176,7 +183,9 @@ bool bvh::hit(const ray& r, interval ray_t, hit_record& rec) const {
     return hit_anything;
 }
 
-aabb bvh::bounding_box() const { return nodes.empty() ? aabb() : nodes[0].box; }
+aabb bvh::bounding_box() const {
+    return nodes.empty() ? aabb() : nodes[0].box;
+}
 
 int bvh::depth() const {
     // Iterative walk with explicit depths, the same order as traversal.

@@ -41,7 +41,7 @@ class bvh : public hittable {
                         int level);
 
     std::vector<std::shared_ptr<hittable>> objects;  // reordered so every leaf is contiguous
-    std::vector<const hittable*> leaf_objects;        // the same, as plain pointers for traversal
+    std::vector<const hittable*> leaf_objects;       // the same, as plain pointers for traversal
     std::vector<node> nodes;
 };
 

@@ -28,7 +28,9 @@ void camera::initialize() {
     require(aperture >= 0 && std::isfinite(aperture), "aperture must be >= 0", aperture);
     require(focus_dist >= 0 && std::isfinite(focus_dist), "focus distance must be >= 0",
             focus_dist);
-    require(shutter_open <= shutter_close, "shutter must open before it closes", shutter_open);
+    // Moving objects are bounded (and defined) for times in [0, 1] only.
+    require(0 <= shutter_open && shutter_open <= shutter_close && shutter_close <= 1,
+            "shutter must satisfy 0 <= open <= close <= 1", shutter_open);
 
     vec3 view = lookfrom - lookat;
     require(view.length() > 0, "lookfrom must differ from lookat", lookfrom);

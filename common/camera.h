@@ -19,8 +19,8 @@ class camera {
     vec3 vup            = vec3(0, 1, 0);     // Which way is up in the scene
     real aperture       = 0;                 // Lens diameter in scene units; 0 is a pinhole
     real focus_dist     = 0;  // Distance to the sharp plane; 0 means |lookfrom-lookat|
-    real shutter_open   = 0;  // Rays get a time uniform in [open, close)
-    real shutter_close  = 1;
+    real shutter_open   = 0;  // Rays get a time uniform in [open, close),
+    real shutter_close  = 1;  // within [0, 1], where motion is defined
 
     // Checks the settings (throws user_error naming the bad value) and derives the viewport.
     void initialize();

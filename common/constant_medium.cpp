@@ -28,9 +28,9 @@ constant_medium::constant_medium(std::shared_ptr<hittable> b, real density,
         throw user_error(message.str());
     }
     aabb box = boundary->bounding_box();
-    id = hash_values(bits_of(density),
-                     hash_values(bits_of(box.x.min), bits_of(box.y.min), bits_of(box.z.min)),
-                     hash_values(bits_of(box.x.max), bits_of(box.y.max), bits_of(box.z.max)));
+    id       = hash_values(bits_of(density),
+                           hash_values(bits_of(box.x.min), bits_of(box.y.min), bits_of(box.z.min)),
+                           hash_values(bits_of(box.x.max), bits_of(box.y.max), bits_of(box.z.max)));
 }
 
 bool constant_medium::hit(const ray& r, interval ray_t, hit_record& rec) const {
@@ -38,16 +38,16 @@ bool constant_medium::hit(const ray& r, interval ray_t, hit_record& rec) const {
     if (!boundary->hit(r, interval::universe(), entry)) return false;
     if (!boundary->hit(r, interval(entry.t, infinity), exit)) return false;
 
-    real t_in  = std::fmax(entry.t, ray_t.min);
+    // Nothing behind the ray's origin counts, whatever interval the caller passes.
+    real t_in  = std::fmax(entry.t, std::fmax(ray_t.min, real(0)));
     real t_out = std::fmin(exit.t, ray_t.max);
     if (!(t_in < t_out)) return false;
-    t_in = std::fmax(t_in, real(0));
 
-    const real speed    = r.direction().length();
-    const real inside   = (t_out - t_in) * speed;
+    const real speed  = r.direction().length();
+    const real inside = (t_out - t_in) * speed;
     // xi in (0, 1]: the top 53 (or 24) bits of the hash; never 0, so the log stays finite.
     const std::uint64_t h = hash_values(r.random_key(), id, 0);
-    const real xi = (real(h >> (64 - std::numeric_limits<real>::digits)) + 1) *
+    const real xi         = (real(h >> (64 - std::numeric_limits<real>::digits)) + 1) *
                     std::ldexp(real(1), -std::numeric_limits<real>::digits);
     const real distance = neg_inv_density * std::log(xi);
     if (distance > inside) return false;
@@ -57,8 +57,8 @@ bool constant_medium::hit(const ray& r, interval ray_t, hit_record& rec) const {
     rec.normal     = vec3(1, 0, 0);  // arbitrary: a medium has no surface
     rec.front_face = true;
     rec.u = rec.v = 0;
-    rec.p_error    = 0;
-    rec.mat        = phase_function.get();
+    rec.p_error   = 0;
+    rec.mat       = phase_function.get();
     return true;
 }
 

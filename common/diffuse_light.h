@@ -26,6 +26,8 @@ class diffuse_light : public material {
         return false;
     }
 
+    bool uses_uv() const override { return radiance->uses_uv(); }
+
   private:
     std::shared_ptr<texture> radiance;
 };

@@ -1,5 +1,5 @@
-// The one error type for mistakes a user can fix (a bad flag value, a bad scene parameter, a
-// missing file). main() catches it, prints its one-line message and exits with code 2.
+// Chapter 01. The one error type for mistakes a user can fix (a bad flag value, a bad scene
+// parameter, a missing file). main() catches it, prints its one-line message and exits with code 2.
 #pragma once
 
 #include <stdexcept>

@@ -1,7 +1,8 @@
 // What a ray can hit, and what it learns at the hit. Chapter 02.
 // A hit record stores the nearest hit's distance t, point p, surface coordinates (u, v) and a
 // unit normal that always faces the incoming ray (front_face says whether that is the outward
-// normal). Bounding boxes come in chapter 07.
+// normal). Bounding boxes come in chapter 07. Key rule: among the hits with t_min < t < t_max,
+// the nearest wins.
 #pragma once
 
 #include <limits>
@@ -24,9 +25,9 @@ struct hit_record {
     vec3 normal;                    // unit, facing against the incoming ray
     const material* mat = nullptr;  // owned by the scene, never null for a hit
     real t              = 0;
-    real u = 0, v = 0;           // surface coordinates of p, for textures
-    real p_error        = 0;     // bound on the distance of p from the true surface
-    bool front_face     = true;  // the ray arrived from the outside
+    real u = 0, v = 0;       // surface coordinates of p, for textures
+    real p_error    = 0;     // bound on the distance of p from the true surface
+    bool front_face = true;  // the ray arrived from the outside
 
     // outward_normal must be unit length.
     void set_face_normal(const ray& r, const vec3& outward_normal) {
@@ -39,8 +40,14 @@ struct hit_record {
     // to the side the new ray leaves by, farther than the error bound of p. From there a convex
     // surface (sphere, quad) cannot be re-hit near t = 0, at any scale. See test_spawn_ray.
     ray spawn_ray(const vec3& direction, real time) const {
-        vec3 offset = p_error * normal;
-        return ray(dot(direction, normal) > 0 ? p + offset : p - offset, direction, time);
+        if (dot(direction, normal) > 0) return spawn_reflected_ray(direction, time);
+        return ray(p - p_error * normal, direction, time);
+    }
+
+    // A ray known to leave on the side the normal faces (a reflection), even when it grazes the
+    // tangent plane and rounding puts dot(direction, normal) at 0 or just below.
+    ray spawn_reflected_ray(const vec3& direction, real time) const {
+        return ray(p + p_error * normal, direction, time);
     }
 };
 

@@ -5,7 +5,7 @@ namespace rt {
 bool hittable_list::hit(const ray& r, interval ray_t, hit_record& rec) const {
     bool hit_anything = false;
     for (const auto& object : objects) {
-        if (object->hit(r, interval(ray_t.min, ray_t.max), rec)) {
+        if (object->hit(r, ray_t, rec)) {
             hit_anything = true;
             ray_t.max    = rec.t;
         }

@@ -42,11 +42,21 @@ void write_atomically(const std::string& path,
     }
 }
 
+// Through our own stream: stbi_write_png ignores fwrite/fclose errors (a full disk would give a
+// truncated PNG and "success"); the stream's state catches them.
 bool write_png(const std::string& path, const image& img) {
     std::vector<std::uint8_t> bytes(img.data().size());
     for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = to_srgb8(img.data()[i]);
-    return stbi_write_png(path.c_str(), img.width(), img.height(), 3, bytes.data(),
-                          img.width() * 3) != 0;
+    std::ofstream out(path, std::ios::binary);
+    if (!out) return false;
+    auto append = [](void* context, void* data, int size) {
+        static_cast<std::ofstream*>(context)->write(static_cast<const char*>(data), size);
+    };
+    if (!stbi_write_png_to_func(append, &out, img.width(), img.height(), 3, bytes.data(),
+                                img.width() * 3))
+        return false;
+    out.close();
+    return bool(out);
 }
 
 bool write_pfm(const std::string& path, const image& img) {

@@ -19,6 +19,7 @@ class image_texture : public texture {
     explicit image_texture(const std::string& path);
 
     color value(real u, real v, const point3& p) const override;
+    bool uses_uv() const override { return true; }
 
     int width() const { return w; }
     int height() const { return h; }

@@ -12,7 +12,7 @@ namespace {
 // The ray inside an instance: its frame, and a key of its own. Mixing (not just xoring) keeps
 // two nested placements with the same salt from cancelling back to the outer key.
 ray inside(const ray& r, const point3& origin, const vec3& direction, std::uint64_t salt) {
-    ray local = r.in_frame(origin, direction);
+    ray local(origin, direction, r.time());
     local.set_random_key(mix_bits(r.random_key() ^ salt));
     return local;
 }

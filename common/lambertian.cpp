@@ -1,8 +1,8 @@
 #include "lambertian.h"
 
+#include "error.h"
 #include "onb.h"
 #include "sampling.h"
-#include "error.h"
 #include "validate.h"
 
 namespace rt {
@@ -20,7 +20,7 @@ bool lambertian::scatter(const ray& r_in, const hit_record& rec, sampler& s, col
     // The book's normal + random_unit_vector() has this same cosine density; sampling it in a
     // local frame needs no rejection loop and no degenerate-direction fix-up.
     vec3 direction = onb(rec.normal).to_world(sample_cosine_hemisphere(s.next_2d()));
-    scattered      = rec.spawn_ray(direction, r_in.time());
+    scattered      = rec.spawn_reflected_ray(direction, r_in.time());
     attenuation    = albedo->value(rec.u, rec.v, rec.p);
     return true;
 }

@@ -16,8 +16,11 @@ class lambertian : public material {
     // An albedo that varies over the surface (chapter 08); its values must lie in [0, 1].
     explicit lambertian(std::shared_ptr<texture> albedo);
 
+    // Draws 2 sampler dimensions: a cosine-weighted direction about the normal.
     bool scatter(const ray& r_in, const hit_record& rec, sampler& s, color& attenuation,
                  ray& scattered) const override;
+
+    bool uses_uv() const override { return albedo->uses_uv(); }
 
   private:
     std::shared_ptr<texture> albedo;

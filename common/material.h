@@ -20,6 +20,9 @@ class material {
     // attenuation = f * |cos theta| / pdf, the pdf taken with respect to solid angle.
     virtual bool scatter(const ray& r_in, const hit_record& rec, sampler& s, color& attenuation,
                          ray& scattered) const = 0;
+
+    // Whether emitted() or scatter() reads the hit's (u, v); see texture::uses_uv.
+    virtual bool uses_uv() const { return false; }
 };
 
 }  // namespace rt

@@ -39,7 +39,7 @@ real perlin::noise(const point3& p) const {
     const real u = p.x() - fx, v = p.y() - fy, w = p.z() - fz;
     // Lattice indices wrap every 256 cells; long long keeps huge coordinates from overflowing.
     const auto i = static_cast<long long>(fx), j = static_cast<long long>(fy),
-               k = static_cast<long long>(fz);
+               k  = static_cast<long long>(fz);
     const real su = u * u * (3 - 2 * u), sv = v * v * (3 - 2 * v), sw = w * w * (3 - 2 * w);
 
     real sum = 0;

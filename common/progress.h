@@ -1,4 +1,4 @@
-// Progress of a long render on stderr: percent done, samples per second, time left.
+// Chapter 01. Progress of a long render on stderr: percent done, samples per second, time left.
 // Any thread may report a finished row; one of them prints, at most a few times a second.
 #pragma once
 

@@ -30,7 +30,7 @@ bool quad::hit(const ray& r, interval ray_t, hit_record& rec) const {
     if (denom == 0) return false;  // parallel to the plane: no single hit point
 
     real t = (D - dot(normal, r.origin())) / denom;
-    if (!ray_t.surrounds(t) || !std::isfinite(t)) return false;
+    if (!ray_t.surrounds(t)) return false;  // also false for inf and NaN
 
     point3 p    = r.at(t);
     vec3 planar = p - Q;

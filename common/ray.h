@@ -21,13 +21,6 @@ class ray {
 
     point3 at(real t) const { return orig + t * dir; }
 
-    // The same ray seen from another frame (an instance's object space): same time and key.
-    ray in_frame(const point3& origin, const vec3& direction) const {
-        ray moved(origin, direction, tm);
-        moved.key = key;
-        return moved;
-    }
-
     std::uint64_t random_key() const { return key; }
     void set_random_key(std::uint64_t k) { key = k; }
 

@@ -25,6 +25,7 @@ sphere::sphere(const point3& c0, const point3& c1, real radius, std::shared_ptr<
         throw user_error(message.str());
     }
     if (!mat) throw user_error("sphere needs a material");
+    needs_uv = mat->uses_uv();
 }
 
 bool sphere::hit(const ray& r, interval ray_t, hit_record& rec) const {
@@ -77,7 +78,10 @@ bool sphere::record_hit(const ray& r, interval ray_t, hit_record& rec, const poi
     rec.p               = center + radius_ * outward_normal;
     rec.p_error         = spawn_offset_scale * (max_abs_component(center) + radius_);
     rec.set_face_normal(r, outward_normal);
-    uv_from_normal(outward_normal, rec.u, rec.v);
+    if (needs_uv)
+        uv_from_normal(outward_normal, rec.u, rec.v);
+    else
+        rec.u = rec.v = 0;
     rec.mat = mat.get();
     return true;
 }

@@ -33,7 +33,6 @@ class sphere : public hittable {
         const point3& from = late ? center1 : center0;
         return from + (late ? time - 1 : time) * velocity;
     }
-    real radius() const { return radius_; }
 
     // Texture coordinates of a point given by its unit outward normal n: u = phi / (2 pi) from
     // the -x axis eastward around +y, through +z, +x, -z (so an image seen from outside is not
@@ -48,8 +47,9 @@ class sphere : public hittable {
                                       real a2_discriminant) const;
 
     point3 center0, center1;
-    vec3 velocity;   // C1 - C0: zero for a static sphere
-    bool is_moving;  // C1 != C0
+    vec3 velocity;          // C1 - C0: zero for a static sphere
+    bool is_moving;         // C1 != C0
+    bool needs_uv = false;  // the material reads (u, v): only then pay for acos and atan2
     real radius_;
     std::shared_ptr<material> mat;
 };

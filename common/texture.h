@@ -13,8 +13,13 @@ class texture {
   public:
     virtual ~texture() = default;
 
-    // The linear RGB reflectance at surface coordinates (u, v) of the point p.
+    // The linear RGB value at surface coordinates (u, v) of the point p: a reflectance in [0, 1]
+    // when it is an albedo, a radiance (any value >= 0) when a light emits it.
     virtual color value(real u, real v, const point3& p) const = 0;
+
+    // Whether value() reads (u, v): shapes skip computing them (a sphere's acos and atan2) when
+    // no texture of the hit's material needs them.
+    virtual bool uses_uv() const { return false; }
 };
 
 // The same color everywhere.
@@ -46,6 +51,7 @@ class checker_texture : public texture {
         long long n = cell(p.x()) + cell(p.y()) + cell(p.z());
         return (n % 2 == 0 ? even : odd)->value(u, v, p);
     }
+    bool uses_uv() const override { return even->uses_uv() || odd->uses_uv(); }
 
   private:
     real cell_size;

@@ -1,5 +1,5 @@
-// Checks of scene parameters, shared by the constructors that take them: a bad value becomes a
-// user_error naming it, never a NaN image.
+// Chapter 03 on. Checks of scene parameters, shared by the constructors that take them: a bad value
+// becomes a user_error naming it, never a NaN image.
 #pragma once
 
 #include <sstream>

@@ -68,9 +68,9 @@ TEST_CASE("camera: image height is width / aspect rounded down, at least 1", "[c
         int width;
         double aspect;
     };
-    for (size_case c : {size_case{400, 16.0 / 9}, size_case{1920, 16.0 / 9}, size_case{401, 2},
-                        size_case{7, 1}, size_case{1, 16.0 / 9}, size_case{10, 100},
-                        size_case{3, 0.5}}) {
+    for (size_case c :
+         {size_case{400, 16.0 / 9}, size_case{1920, 16.0 / 9}, size_case{401, 2}, size_case{7, 1},
+          size_case{1, 16.0 / 9}, size_case{10, 100}, size_case{3, 0.5}}) {
         rt::camera cam;
         cam.image_width  = c.width;
         cam.aspect_ratio = c.aspect;
@@ -322,4 +322,23 @@ TEST_CASE("camera: ray times are uniform from shutter_open up to shutter_close",
     instant.shutter_close = real(0.5);
     instant.initialize();
     CHECK(trace(instant, 10, 10, 0).r.time() == real(0.5));
+}
+
+TEST_CASE("camera: a shutter outside [0, 1] is refused", "[camera][ch07]") {
+    // Moving spheres are defined, and bounded for the BVH, only for times in [0, 1]: a longer
+    // shutter would silently clip their blur.
+    struct shutter_case {
+        real open, close;
+    };
+    for (shutter_case c : {shutter_case{0, 2}, shutter_case{-0.5, 0.5}, shutter_case{0.7, 0.2},
+                           shutter_case{0, rt::infinity}}) {
+        rt::camera cam;
+        cam.shutter_open  = c.open;
+        cam.shutter_close = c.close;
+        CAPTURE(c.open, c.close);
+        CHECK_THROWS_AS(cam.initialize(), rt::user_error);
+    }
+    rt::camera instant;
+    instant.shutter_open = instant.shutter_close = real(0.25);
+    CHECK_NOTHROW(instant.initialize());
 }

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "common/error.h"
+#include "common/lambertian.h"
 #include "common/normal_shading.h"
 #include "common/rng.h"
 #include "common/sampling.h"
@@ -341,6 +342,18 @@ rt::sphere make_moving(const point3& c0, const point3& c1, real radius) {
     return rt::sphere(c0, c1, radius, std::make_shared<rt::normal_shading>());
 }
 
+// A texture that reads (u, v), so a sphere made of it computes them on every hit (spheres skip
+// that work for materials that never look at (u, v)).
+struct uv_reading_texture : rt::texture {
+    rt::color value(real u, real v, const point3&) const override { return rt::color(u, v, 0); }
+    bool uses_uv() const override { return true; }
+};
+
+rt::sphere make_textured_moving(const point3& c0, const point3& c1, real radius) {
+    return rt::sphere(c0, c1, radius,
+                      std::make_shared<rt::lambertian>(std::make_shared<uv_reading_texture>()));
+}
+
 // A point with full-precision coordinates (53 random bits for a double; uniform() alone has
 // 32, and the difference of two such numbers is always exact in a double, which would hide the
 // rounding of C1 - C0) at magnitudes from 1e-3 to 1e3, so that the two ends of a motion often
@@ -618,7 +631,7 @@ TEST_CASE("sphere: a hit reports the (u, v) of its outward normal, also on a mov
         const point3 c0   = random_in_cube(rng, 5);
         const point3 c1   = i % 2 ? c0 : random_in_cube(rng, 5);
         const real radius = uniform(rng, real(0.1), 3);
-        auto s            = make_moving(c0, c1, radius);
+        auto s            = make_textured_moving(c0, c1, radius);
         const real t      = rng.uniform();
         const point3 c    = s.center_at(t);
         const point3 o    = c + (i % 3 == 0 ? real(0.5) : real(4)) * radius * random_unit(rng);
