@@ -13,6 +13,7 @@
 
 #include "common/camera.h"
 #include "common/error.h"
+#include "test_helpers.h"
 
 using Catch::Matchers::Contains;
 using rt::point3;
@@ -23,9 +24,8 @@ namespace {
 
 constexpr real eps = std::numeric_limits<real>::epsilon();
 
-bool equal(const vec3& a, const vec3& b) {
-    return a.x() == b.x() && a.y() == b.y() && a.z() == b.z();
-}
+// Bit-for-bit equality of vectors (rt_test::exactly), under the name the checks read best with.
+bool (&equal)(const vec3&, const vec3&) = rt_test::exactly;
 
 struct traced {
     rt::ray r;

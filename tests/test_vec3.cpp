@@ -6,6 +6,7 @@
 
 #include "common/rng.h"
 #include "common/vec3.h"
+#include "test_helpers.h"
 
 using rt::real;
 using rt::vec3;
@@ -14,9 +15,8 @@ namespace {
 
 constexpr real eps = std::numeric_limits<real>::epsilon();
 
-bool equal(const vec3& a, const vec3& b) {
-    return a.x() == b.x() && a.y() == b.y() && a.z() == b.z();
-}
+// Bit-for-bit equality of vectors (rt_test::exactly), under the name the checks read best with.
+bool (&equal)(const vec3&, const vec3&) = rt_test::exactly;
 
 vec3 random_vec3(rt::pcg32& rng, real scale) {
     // One draw per statement: the order of arguments' evaluation is unspecified in C++.
