@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "estimator.h"
 #include "vec3.h"
 
 namespace rt {
@@ -24,6 +25,16 @@ struct background {
         return color(std::lerp(bottom.x(), top.x(), a), std::lerp(bottom.y(), top.y(), a),
                      std::lerp(bottom.z(), top.z(), a));
     }
+};
+
+// Chapter 01's whole renderer: every ray sees the background, since there is nothing to hit.
+class sky_only : public radiance_estimator {
+  public:
+    explicit sky_only(const background& b) : sky(b) {}
+    color radiance(const ray& r, sampler&, int) const override { return sky.radiance(r.direction()); }
+
+  private:
+    background sky;
 };
 
 }  // namespace rt

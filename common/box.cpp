@@ -3,24 +3,23 @@
 #include <algorithm>
 #include <sstream>
 
-#include "bvh.h"
-#include "error.h"
 #include "quad.h"
+#include "validate.h"
 
 namespace rt {
 
-std::vector<std::shared_ptr<hittable>> box_faces(const point3& a, const point3& b,
-                                                 std::shared_ptr<material> mat) {
+std::vector<bounded_object> box_faces(const point3& a, const point3& b,
+                                      std::shared_ptr<material> mat) {
     point3 lo(std::min(a.x(), b.x()), std::min(a.y(), b.y()), std::min(a.z(), b.z()));
     point3 hi(std::max(a.x(), b.x()), std::max(a.y(), b.y()), std::max(a.z(), b.z()));
     if (!(lo.x() < hi.x() && lo.y() < hi.y() && lo.z() < hi.z())) {
-        std::ostringstream message;
-        message << "box is flat: corners " << a << " and " << b << " share a coordinate";
-        throw user_error(message.str());
+        std::ostringstream corners;
+        corners << a << " and " << b;
+        require(false, "box corners", "differ in every coordinate (not a flat box)", corners.str());
     }
     vec3 dx(hi.x() - lo.x(), 0, 0), dy(0, hi.y() - lo.y(), 0), dz(0, 0, hi.z() - lo.z());
 
-    std::vector<std::shared_ptr<hittable>> sides;
+    std::vector<bounded_object> sides;
     // Each face lists its edges so that u x v points outwards.
     sides.push_back(
         std::make_shared<quad>(point3(lo.x(), lo.y(), hi.z()), dx, dy, mat));  // front +z
@@ -37,7 +36,7 @@ std::vector<std::shared_ptr<hittable>> box_faces(const point3& a, const point3& 
     return sides;
 }
 
-std::shared_ptr<hittable> box(const point3& a, const point3& b, std::shared_ptr<material> mat) {
+std::shared_ptr<bvh> box(const point3& a, const point3& b, std::shared_ptr<material> mat) {
     return std::make_shared<bvh>(box_faces(a, b, std::move(mat)));
 }
 

@@ -34,10 +34,10 @@ struct bvh::build_item {
     std::uint32_t object;
 };
 
-bvh::bvh(std::vector<std::shared_ptr<hittable>> input) {
+bvh::bvh(const std::vector<bounded_object>& input) {
     std::vector<build_item> items(input.size());
     for (std::size_t i = 0; i < input.size(); ++i) {
-        aabb box = input[i]->bounding_box();
+        const aabb& box = input[i].box;
         items[i] = {box, box.centroid(), std::uint32_t(i)};
     }
     nodes.reserve(2 * input.size());
@@ -49,7 +49,7 @@ bvh::bvh(std::vector<std::shared_ptr<hittable>> input) {
         throw std::logic_error("bvh: tree depth " + std::to_string(depth()) + " exceeds the stack");
 
     objects.reserve(items.size());
-    for (const auto& item : items) objects.push_back(input[item.object]);
+    for (const auto& item : items) objects.push_back(input[item.object].object);
     for (const auto& object : objects) leaf_objects.push_back(object.get());
 }
 

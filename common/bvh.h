@@ -12,14 +12,14 @@
 #include <memory>
 #include <vector>
 
-#include "hittable.h"
+#include "bounded.h"
 
 namespace rt {
 
-class bvh : public hittable {
+class bvh : public bounded_hittable {
   public:
     // Builds the tree over `objects`; deterministic (no random choices).
-    explicit bvh(std::vector<std::shared_ptr<hittable>> objects);
+    explicit bvh(const std::vector<bounded_object>& objects);
 
     bool hit(const ray& r, interval ray_t, hit_record& rec) const override;
     aabb bounding_box() const override;

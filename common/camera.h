@@ -1,9 +1,11 @@
-// The camera: where rays start and which way they go. Chapter 01 (pinhole), chapter 06
-// (positionable, thin lens), chapter 07 (shutter interval).
+// The camera: where rays start and which way they go. Chapter 01: a pinhole at the origin
+// looking down -z (chapter 06's thin_lens_camera can stand anywhere and has a lens).
 // Pixel (i, j), (0, 0) at the top left, looks through pixel00 + (i + dx) du + (j + dy) dv with a
 // jitter (dx, dy) uniform in [-0.5, 0.5)^2: a box filter over the pixel, which anti-aliases edges.
+// The viewport, `distance` in front of the eye, is 2 tan(vfov / 2) * distance high.
 #pragma once
 
+#include "film.h"
 #include "ray.h"
 #include "sampler.h"
 
@@ -11,31 +13,31 @@ namespace rt {
 
 class camera {
   public:
-    double aspect_ratio = 16.0 / 9;          // Ideal width over height; height is rounded down
-    int image_width     = 400;               // Rendered image width in pixels
-    real vfov           = 90;                // Vertical field of view in degrees
-    point3 lookfrom     = point3(0, 0, 0);   // Where the camera is
-    point3 lookat       = point3(0, 0, -1);  // The point it looks at
-    vec3 vup            = vec3(0, 1, 0);     // Which way is up in the scene
-    real aperture       = 0;                 // Lens diameter in scene units; 0 is a pinhole
-    real focus_dist     = 0;  // Distance to the sharp plane; 0 means |lookfrom-lookat|
-    real shutter_open   = 0;  // Rays get a time uniform in [open, close),
-    real shutter_close  = 1;  // within [0, 1], where motion is defined
+    double aspect_ratio = 16.0 / 9;  // Ideal width over height; the film's height follows
+    real vfov           = 90;        // Vertical field of view in degrees
 
-    // Checks the settings (throws user_error naming the bad value) and derives the viewport.
-    void initialize();
+    virtual ~camera() = default;
 
-    int image_height() const { return height; }
+    // Checks the settings (throws user_error naming a bad one) and lays the pixel grid over f.
+    virtual void initialize(const film& f);
 
-    // A camera ray through pixel (i, j). Draws sampler dimensions 0-4: jitter (2), lens (2),
-    // time (1), always all five, so later dimensions stay put whatever the camera settings.
-    ray get_ray(int i, int j, sampler& s) const;
+    // A camera ray through pixel (i, j). Draws 2 sampler dimensions: the jitter.
+    virtual ray get_ray(int i, int j, sampler& s) const;
+
+  protected:
+    // Lays the pixel grid for an eye at `eye` with the orthonormal frame u (right), v (up),
+    // w (backwards: the camera looks down -w), the viewport `distance` in front of it.
+    void place_viewport(const film& f, const point3& eye, const vec3& u, const vec3& v,
+                        const vec3& w, real distance);
+
+    // A jittered point of pixel (i, j) on the viewport. Draws 2 sampler dimensions.
+    point3 pixel_sample(int i, int j, sampler& s) const;
+
+    point3 center;  // the eye
 
   private:
-    int height = 0;
-    point3 center, pixel00;
+    point3 pixel00;
     vec3 pixel_du, pixel_dv;  // offsets from one pixel to the next, right and down
-    vec3 lens_u, lens_v;      // the lens disk's radius vectors
 };
 
 }  // namespace rt

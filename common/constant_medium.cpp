@@ -4,31 +4,23 @@
 #include <limits>
 #include <sstream>
 
-#include "error.h"
 #include "isotropic.h"
 #include "rng.h"
 #include "validate.h"
 
 namespace rt {
 
-constant_medium::constant_medium(std::shared_ptr<hittable> b, real density, const color& albedo)
-    : constant_medium(std::move(b), density, std::make_shared<solid_color>(albedo)) {
+constant_medium::constant_medium(const bounded_object& b, real density, const color& albedo)
+    : constant_medium(b, density, std::make_shared<solid_color>(albedo)) {
     require_reflectance(albedo, "medium albedo");
 }
 
-constant_medium::constant_medium(std::shared_ptr<hittable> b, real density,
+constant_medium::constant_medium(const bounded_object& b, real density,
                                  std::shared_ptr<texture> albedo)
-    : boundary(std::move(b)),
-      neg_inv_density(-1 / density),
-      phase_function(std::make_shared<isotropic>(std::move(albedo))) {
-    if (!boundary) throw user_error("constant_medium needs a boundary");
-    if (!(density > 0) || !std::isfinite(density)) {
-        std::ostringstream message;
-        message << "medium density must be positive and finite, got " << density;
-        throw user_error(message.str());
-    }
-    aabb box = boundary->bounding_box();
-    id       = hash_values(bits_of(density),
+    : boundary(b.object), box(b.box), neg_inv_density(-1 / density) {
+    require_positive(density, "medium density");
+    phase_function = std::make_shared<isotropic>(std::move(albedo));
+    id             = hash_values(bits_of(density),
                            hash_values(bits_of(box.x.min), bits_of(box.y.min), bits_of(box.z.min)),
                            hash_values(bits_of(box.x.max), bits_of(box.y.max), bits_of(box.z.max)));
 }
@@ -45,21 +37,28 @@ bool constant_medium::hit(const ray& r, interval ray_t, hit_record& rec) const {
 
     const real speed  = r.direction().length();
     const real inside = (t_out - t_in) * speed;
-    // xi in (0, 1]: the top 53 (or 24) bits of the hash; never 0, so the log stays finite.
-    const std::uint64_t h = hash_values(r.random_key(), id, 0);
-    const real xi         = (real(h >> (64 - std::numeric_limits<real>::digits)) + 1) *
-                    std::ldexp(real(1), -std::numeric_limits<real>::digits);
-    const real distance = neg_inv_density * std::log(xi);
+    const real distance = neg_inv_density * std::log(random_for(r));
     if (distance > inside) return false;
 
     rec.t          = t_in + distance / speed;
     rec.p          = r.at(rec.t);
     rec.normal     = vec3(1, 0, 0);  // arbitrary: a medium has no surface
     rec.front_face = true;
-    rec.u = rec.v = 0;
-    rec.p_error   = 0;
-    rec.mat       = phase_function.get();
+    rec.p_error    = 0;
+    rec.mat        = phase_function.get();
+    rec.object     = this;  // no surface: (u, v) = (0, 0)
     return true;
+}
+
+real constant_medium::random_for(const ray& r) const {
+    const point3& o = r.origin();
+    const vec3& d   = r.direction();
+    std::uint64_t h = hash_values(hash_values(bits_of(o.x()), bits_of(o.y()), bits_of(o.z())),
+                                  hash_values(bits_of(d.x()), bits_of(d.y()), bits_of(d.z())),
+                                  hash_values(bits_of(r.time()), id, 0));
+    // The top 53 (or 24) bits, plus one: in (0, 1], never 0, so the log stays finite.
+    return (real(h >> (64 - std::numeric_limits<real>::digits)) + 1) *
+           std::ldexp(real(1), -std::numeric_limits<real>::digits);
 }
 
 }  // namespace rt

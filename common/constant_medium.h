@@ -9,35 +9,39 @@
 // stretch. Rays that start inside (after scattering, or inside a glass sphere that holds the
 // medium) work: the entry then lies behind them and the path starts at t = 0.
 //
-// xi comes from hashing the ray's random key (drawn from the sampler per path segment) with
-// this medium's own id, so each medium a segment crosses makes an independent choice, and the
-// render stays deterministic. The id is a hash of the medium's box and density. One medium placed
-// twice by instances (translate, rotate) also chooses independently in each placement, because an
-// instance hands its object a key of its own (instance.h).
+// xi comes from hashing the ray itself (the bits of its origin, direction and instant) with this
+// medium's own id, not from the sampler: hit() has no sampler, and so scenes without media pay
+// nothing for them (no sampler dimensions, no extra field in every ray). A path's rays are
+// random, so their hashes are too; the render stays deterministic. Each medium a segment crosses
+// makes its own choice (the id hashes the medium's box and density), and one medium placed twice
+// by instances chooses independently in each placement, since each sees the ray in its own frame.
 #pragma once
 
 #include <cstdint>
 #include <memory>
 
-#include "hittable.h"
+#include "bounded.h"
 #include "texture.h"
 
 namespace rt {
 
-class constant_medium : public hittable {
+class constant_medium : public bounded_hittable {
   public:
     // density > 0 and finite; throws user_error otherwise.
-    constant_medium(std::shared_ptr<hittable> boundary, real density, const color& albedo);
-    constant_medium(std::shared_ptr<hittable> boundary, real density,
-                    std::shared_ptr<texture> albedo);
+    constant_medium(const bounded_object& boundary, real density, const color& albedo);
+    constant_medium(const bounded_object& boundary, real density, std::shared_ptr<texture> albedo);
 
     // A hit is a scattering event inside: p on the ray, no surface, so the record's normal is
     // arbitrary and p_error 0 (new rays start exactly at p).
     bool hit(const ray& r, interval ray_t, hit_record& rec) const override;
-    aabb bounding_box() const override { return boundary->bounding_box(); }
+    aabb bounding_box() const override { return box; }
+
+    // The uniform number in (0, 1] this medium draws for ray r.
+    real random_for(const ray& r) const;
 
   private:
     std::shared_ptr<hittable> boundary;
+    aabb box;
     real neg_inv_density;
     std::shared_ptr<material> phase_function;
     std::uint64_t id;

@@ -1,19 +1,19 @@
 #include "dielectric.h"
 
 #include <cmath>
-#include <sstream>
 
-#include "error.h"
 #include "optics.h"
+#include "validate.h"
 
 namespace rt {
 
-dielectric::dielectric(real index) : ior(index) {
-    if (!(index > 0) || !std::isfinite(index)) {
-        std::ostringstream message;
-        message << "dielectric index of refraction must be positive and finite, got " << index;
-        throw user_error(message.str());
-    }
+dielectric::dielectric(real index, fresnel_model m) : ior(index), model(m) {
+    require_positive(index, "dielectric index of refraction");
+}
+
+real dielectric::reflectance(real cos_theta, real eta) const {
+    return model == fresnel_model::exact ? fresnel_reflectance(cos_theta, eta)
+                                         : schlick_reflectance(cos_theta, eta);
 }
 
 bool dielectric::scatter(const ray& r_in, const hit_record& rec, sampler& s, color& attenuation,
@@ -24,10 +24,10 @@ bool dielectric::scatter(const ray& r_in, const hit_record& rec, sampler& s, col
     real cos_theta = std::min(dot(-unit_dir, rec.normal), real(1));
 
     bool reflects =
-        total_internal_reflection(cos_theta, eta) || schlick_reflectance(cos_theta, eta) > choice;
+        total_internal_reflection(cos_theta, eta) || reflectance(cos_theta, eta) > choice;
     vec3 direction = reflects ? reflect(unit_dir, rec.normal) : refract(unit_dir, rec.normal, eta);
 
-    scattered   = rec.spawn_ray(direction, r_in.time());
+    scattered   = rec.spawn_ray(r_in, direction);
     attenuation = color(1, 1, 1);  // clear glass absorbs nothing
     return true;
 }

@@ -18,15 +18,13 @@ class diffuse_light : public material {
     explicit diffuse_light(std::shared_ptr<texture> radiance);
 
     color emitted(const ray&, const hit_record& rec) const override {
-        return radiance->value(rec.u, rec.v, rec.p);
+        return radiance->value_at(rec);
     }
 
     // Absorbs every ray: a light does not reflect.
     bool scatter(const ray&, const hit_record&, sampler&, color&, ray&) const override {
         return false;
     }
-
-    bool uses_uv() const override { return radiance->uses_uv(); }
 
   private:
     std::shared_ptr<texture> radiance;

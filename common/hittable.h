@@ -1,33 +1,46 @@
 // What a ray can hit, and what it learns at the hit. Chapter 02.
-// A hit record stores the nearest hit's distance t, point p, surface coordinates (u, v) and a
-// unit normal that always faces the incoming ray (front_face says whether that is the outward
-// normal). Bounding boxes come in chapter 07. Key rule: among the hits with t_min < t < t_max,
-// the nearest wins.
+// A hit record stores the nearest hit's distance t, point p and a unit normal that always faces
+// the incoming ray (front_face says whether that is the outward normal). Key rule: among the
+// hits with t_min < t < t_max, the nearest wins.
 #pragma once
 
 #include <limits>
 
-#include "aabb.h"
 #include "interval.h"
 #include "ray.h"
 
 namespace rt {
 
 class material;
+class hittable;
 
 // Relative size of the offset that moves a new ray's origin off the surface it leaves.
 // Many ulps, so it dominates the rounding in p and in the intersection test; still only ~1e-14
 // (double) or ~1e-5 (float) of the scene's scale, far below a pixel.
 inline constexpr real spawn_offset_scale = 64 * std::numeric_limits<real>::epsilon();
 
+// [ch08 begin]
+// Surface coordinates (u, v) of a hit, for textures.
+struct surface_uv {
+    real u = 0, v = 0;
+};
+// [ch08 end]
+
 struct hit_record {
     point3 p;
     vec3 normal;                    // unit, facing against the incoming ray
     const material* mat = nullptr;  // owned by the scene, never null for a hit
     real t              = 0;
-    real u = 0, v = 0;       // surface coordinates of p, for textures
-    real p_error    = 0;     // bound on the distance of p from the true surface
-    bool front_face = true;  // the ray arrived from the outside
+    real p_error        = 0;     // bound on the distance of p from the true surface
+    bool front_face     = true;  // the ray arrived from the outside
+    // [ch08 begin]
+    // What (u, v) are computed from, later and only for the nearest hit (a sphere's acos and
+    // atan2 on every candidate would cost about a tenth of a big scene's time): the shape that
+    // recorded the hit, and the hit in that shape's own terms (before any instance moved it).
+    const hittable* object = nullptr;
+    vec3 local;
+    surface_uv uv() const;
+    // [ch08 end]
 
     // outward_normal must be unit length.
     void set_face_normal(const ray& r, const vec3& outward_normal) {
@@ -35,19 +48,20 @@ struct hit_record {
         normal     = front_face ? outward_normal : -outward_normal;
     }
 
-    // A ray leaving this hit. Why not the book's t > 0.001: that constant is too big for tiny
-    // objects and too small for huge or distant ones. Instead the origin moves along the normal,
-    // to the side the new ray leaves by, farther than the error bound of p. From there a convex
-    // surface (sphere, quad) cannot be re-hit near t = 0, at any scale. See test_spawn_ray.
-    ray spawn_ray(const vec3& direction, real time) const {
-        if (dot(direction, normal) > 0) return spawn_reflected_ray(direction, time);
-        return ray(p - p_error * normal, direction, time);
+    // The next segment of r_in's path, leaving this hit in `direction`. Why not the book's
+    // t > 0.001: that constant is too big for tiny objects and too small for huge or distant
+    // ones. Instead the origin moves along the normal, to the side the new ray leaves by, farther
+    // than the error bound of p. From there a convex surface (sphere, quad) cannot be re-hit near
+    // t = 0, at any scale. See test_spawn_ray.
+    ray spawn_ray(const ray& r_in, const vec3& direction) const {
+        if (dot(direction, normal) > 0) return spawn_reflected_ray(r_in, direction);
+        return r_in.continued(p - p_error * normal, direction);
     }
 
     // A ray known to leave on the side the normal faces (a reflection), even when it grazes the
     // tangent plane and rounding puts dot(direction, normal) at 0 or just below.
-    ray spawn_reflected_ray(const vec3& direction, real time) const {
-        return ray(p + p_error * normal, direction, time);
+    ray spawn_reflected_ray(const ray& r_in, const vec3& direction) const {
+        return r_in.continued(p + p_error * normal, direction);
     }
 };
 
@@ -59,8 +73,17 @@ class hittable {
     // on a miss returns false and leaves rec unchanged.
     virtual bool hit(const ray& r, interval ray_t, hit_record& rec) const = 0;
 
-    // A box that contains the object at every time of the shutter interval [0, 1].
-    virtual aabb bounding_box() const = 0;
+    // [ch08 begin]
+    // The surface coordinates of a hit this object recorded, from its rec.local. Objects with
+    // no surface (a medium) have none: (0, 0).
+    virtual surface_uv uv_at(const vec3& /*local*/) const { return {}; }
+    // [ch08 end]
 };
+
+// [ch08 begin]
+inline surface_uv hit_record::uv() const {
+    return object ? object->uv_at(local) : surface_uv{};
+}
+// [ch08 end]
 
 }  // namespace rt

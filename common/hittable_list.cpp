@@ -13,10 +13,4 @@ bool hittable_list::hit(const ray& r, interval ray_t, hit_record& rec) const {
     return hit_anything;
 }
 
-aabb hittable_list::bounding_box() const {
-    aabb box;
-    for (const auto& object : objects) box = aabb(box, object->bounding_box());
-    return box;
-}
-
 }  // namespace rt

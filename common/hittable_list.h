@@ -13,14 +13,11 @@ class hittable_list : public hittable {
     std::vector<std::shared_ptr<hittable>> objects;
 
     hittable_list() = default;
-    explicit hittable_list(std::shared_ptr<hittable> object) { add(std::move(object)); }
 
     void add(std::shared_ptr<hittable> object) { objects.push_back(std::move(object)); }
 
     // Each object is asked only for hits nearer than the nearest found so far.
     bool hit(const ray& r, interval ray_t, hit_record& rec) const override;
-
-    aabb bounding_box() const override;
 };
 
 }  // namespace rt

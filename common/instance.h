@@ -3,22 +3,18 @@
 // object there, and carry the hit back out: p_world = M p_object, n_world = M n_object (M is a
 // rotation, so normals need no inverse transpose), and front_face is unchanged because rotations
 // and translations preserve the angle between the ray and the normal.
-// Each placement is an object of its own, so a medium inside it must make its own random choices
-// (constant_medium.h): the ray passed in carries key' = mix(key ^ salt), the salt a hash of the
-// instance's offset or turn. Two translates of one smoke box then scatter independently.
 #pragma once
 
-#include <cstdint>
 #include <memory>
 
-#include "hittable.h"
+#include "bounded.h"
 
 namespace rt {
 
 // The object moved by `offset`.
-class translate : public hittable {
+class translate : public bounded_hittable {
   public:
-    translate(std::shared_ptr<hittable> object, const vec3& offset);
+    translate(const bounded_object& object, const vec3& offset);
 
     bool hit(const ray& r, interval ray_t, hit_record& rec) const override;
     aabb bounding_box() const override { return box; }
@@ -27,7 +23,6 @@ class translate : public hittable {
     std::shared_ptr<hittable> object;
     vec3 offset;
     aabb box;
-    std::uint64_t salt;  // this placement's share of the random key, see above
 };
 
 enum class axis { x, y, z };
@@ -37,9 +32,9 @@ enum class axis { x, y, z };
 //   x' = cos x + sin z,  z' = -sin x + cos z.
 // About x: y' = cos y - sin z, z' = sin y + cos z.
 // About z: x' = cos x - sin y, y' = sin x + cos y.
-class rotate : public hittable {
+class rotate : public bounded_hittable {
   public:
-    rotate(std::shared_ptr<hittable> object, axis about, real degrees);
+    rotate(const bounded_object& object, axis about, real degrees);
 
     bool hit(const ray& r, interval ray_t, hit_record& rec) const override;
     aabb bounding_box() const override { return box; }
@@ -55,7 +50,6 @@ class rotate : public hittable {
     int a, b;  // the two coordinates that turn: (y, z) about x, (z, x) about y, (x, y) about z
     real sin_theta, cos_theta;
     aabb box;
-    std::uint64_t salt;  // this placement's share of the random key, see above
 };
 
 }  // namespace rt

@@ -1,6 +1,5 @@
 #include "isotropic.h"
 
-#include "error.h"
 #include "sampling.h"
 #include "validate.h"
 
@@ -11,13 +10,13 @@ isotropic::isotropic(const color& a) : albedo(std::make_shared<solid_color>(a)) 
 }
 
 isotropic::isotropic(std::shared_ptr<texture> a) : albedo(std::move(a)) {
-    if (!albedo) throw user_error("isotropic needs a texture");
+    require_given(albedo, "isotropic albedo");
 }
 
 bool isotropic::scatter(const ray& r_in, const hit_record& rec, sampler& s, color& attenuation,
                         ray& scattered) const {
-    scattered   = ray(rec.p, sample_uniform_sphere(s.next_2d()), r_in.time());
-    attenuation = albedo->value(rec.u, rec.v, rec.p);
+    scattered   = r_in.continued(rec.p, sample_uniform_sphere(s.next_2d()));
+    attenuation = albedo->value_at(rec);
     return true;
 }
 

@@ -18,8 +18,6 @@ class isotropic : public material {
     bool scatter(const ray& r_in, const hit_record& rec, sampler& s, color& attenuation,
                  ray& scattered) const override;
 
-    bool uses_uv() const override { return albedo->uses_uv(); }
-
   private:
     std::shared_ptr<texture> albedo;
 };

@@ -18,7 +18,7 @@ bool metal::scatter(const ray& r_in, const hit_record& rec, sampler& s, color& a
     vec3 reflected  = unit_vector(reflect(r_in.direction(), rec.normal));
     vec3 direction  = reflected + fuzz * sample_uniform_ball(ball_uv, ball_w);
     if (!(dot(direction, rec.normal) > 0)) return false;  // fuzzed under the surface
-    scattered   = rec.spawn_ray(direction, r_in.time());
+    scattered   = rec.spawn_ray(r_in, direction);
     attenuation = albedo;
     return true;
 }

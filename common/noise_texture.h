@@ -20,6 +20,7 @@ class noise_texture : public texture {
         real gray = real(0.5) * (1 + std::sin(scale * p.z() + 10 * noise.turbulence(p, 7)));
         return color(gray, gray, gray);
     }
+    bool uses_uv() const override { return false; }
 
   private:
     perlin noise;

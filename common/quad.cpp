@@ -3,7 +3,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "error.h"
+#include "validate.h"
 
 namespace rt {
 
@@ -13,13 +13,12 @@ quad::quad(const point3& q, const vec3& u_edge, const vec3& v_edge, std::shared_
     real area      = n.length();
     real edge_area = u.length() * v.length();
     // Relative test: edges that are parallel to rounding error span no usable plane.
-    if (!(area > 1e-6 * edge_area) || !std::isfinite(area)) {
-        std::ostringstream message;
-        message << "quad has zero area: edges u = " << u << " and v = " << v
-                << " are zero or parallel";
-        throw user_error(message.str());
+    if (!(area > 1e-6 * edge_area && std::isfinite(area))) {
+        std::ostringstream edges;
+        edges << "u = " << u << ", v = " << v;
+        require(false, "quad edges", "span an area (not be zero or parallel)", edges.str());
     }
-    if (!mat) throw user_error("quad needs a material");
+    require_given(mat, "quad material");
     normal = n / area;
     D      = dot(normal, Q);
     w      = n / dot(n, n);
@@ -39,19 +38,14 @@ bool quad::hit(const ray& r, interval ray_t, hit_record& rec) const {
     if (!(alpha >= 0 && alpha <= 1 && beta >= 0 && beta <= 1)) return false;
 
     rec.t = t;
-    rec.u = alpha;
-    rec.v = beta;
     // Move p onto the plane so its error no longer grows with the distance travelled.
     rec.p       = p - (dot(normal, p) - D) * normal;
     rec.p_error = spawn_offset_scale * (max_abs_component(rec.p) + std::fabs(D));
     rec.set_face_normal(r, normal);
-    rec.mat = mat.get();
+    rec.mat    = mat.get();
+    rec.object = this;                    // [ch08]
+    rec.local  = vec3(alpha, beta, 0);    // [ch08]
     return true;
-}
-
-aabb quad::bounding_box() const {
-    // The box of all four corners (the two diagonals' boxes); aabb pads a flat one.
-    return aabb(aabb(Q, Q + u + v), aabb(Q + u, Q + v));
 }
 
 }  // namespace rt

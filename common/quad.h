@@ -7,7 +7,6 @@
 #include <memory>
 
 #include "hittable.h"
-#include "material.h"
 
 namespace rt {
 
@@ -16,9 +15,17 @@ class quad : public hittable {
     // Throws user_error when u and v span no area (zero, or parallel).
     quad(const point3& Q, const vec3& u, const vec3& v, std::shared_ptr<material> mat);
 
-    // On a hit, (u, v) = (a, b): the hit's coordinates along the two edges.
     bool hit(const ray& r, interval ray_t, hit_record& rec) const override;
-    aabb bounding_box() const override;
+
+    // [ch08 begin]
+    // (u, v) = (a, b): the hit's coordinates along the two edges, kept in rec.local.
+    surface_uv uv_at(const vec3& local) const override { return {local.x(), local.y()}; }
+    // [ch08 end]
+
+    // The corner and the two edges.
+    const point3& corner() const { return Q; }
+    const vec3& edge_u() const { return u; }
+    const vec3& edge_v() const { return v; }
 
   private:
     point3 Q;

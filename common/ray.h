@@ -1,9 +1,7 @@
-// A ray P(t) = A + t*b: origin A, direction b, and the instant it travels at. Chapter 01.
-// Chapter 12 adds a random key: bits a participating medium hashes into its own random numbers
-// while the ray is traced (see constant_medium.h), drawn from the sampler by the integrator.
+// A ray P(t) = A + t*b: origin A and direction b. Chapter 01.
+// Chapter 07 adds the instant the ray samples (motion blur): 0 until a shutter camera sets it,
+// and carried along the whole path by continued().
 #pragma once
-
-#include <cstdint>
 
 #include "vec3.h"
 
@@ -12,23 +10,29 @@ namespace rt {
 class ray {
   public:
     ray() = default;
-    ray(const point3& origin, const vec3& direction, real time = 0)
-        : orig(origin), dir(direction), tm(time) {}
+    ray(const point3& origin, const vec3& direction) : orig(origin), dir(direction) {}
+    ray(const point3& origin, const vec3& direction, real time)  // [ch07]
+        : orig(origin), dir(direction), tm(time) {}              // [ch07]
 
     const point3& origin() const { return orig; }
     const vec3& direction() const { return dir; }
-    real time() const { return tm; }
+    real time() const { return tm; }  // [ch07]
 
     point3 at(real t) const { return orig + t * dir; }
 
-    std::uint64_t random_key() const { return key; }
-    void set_random_key(std::uint64_t k) { key = k; }
+    // The next segment of the same path (a scattered ray, or this ray in an instance's frame):
+    // a new origin and direction, everything else carried over.
+    ray continued(const point3& origin, const vec3& direction) const {
+        ray next  = *this;
+        next.orig = origin;
+        next.dir  = direction;
+        return next;
+    }
 
   private:
     point3 orig;
     vec3 dir;
-    real tm           = 0;
-    std::uint64_t key = 0;
+    real tm = 0;  // [ch07] the instant, in the shutter interval [0, 1]
 };
 
 }  // namespace rt

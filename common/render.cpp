@@ -2,14 +2,13 @@
 
 #include <omp.h>
 
-#include "integrator.h"
 #include "progress.h"
 
 namespace rt {
 
-render_result render(const scene& sc, const render_settings& settings) {
-    const camera& cam = sc.cam;
-    const int width = cam.image_width, height = cam.image_height();
+render_result render(const film& f, const camera& cam, const radiance_estimator& estimator,
+                     const render_settings& settings) {
+    const int width = f.width, height = f.height;
     const int spp = settings.samples_per_pixel;
     render_result result{image(width, height), image(width, height), 0};
     progress_meter progress(height, double(width) * spp, settings.quiet);
@@ -27,7 +26,7 @@ render_result render(const scene& sc, const render_settings& settings) {
             double mean[3] = {0, 0, 0}, m2[3] = {0, 0, 0};
             for (int k = 0; k < spp; ++k) {
                 s.start_pixel_sample(i, j, k);
-                color L = trace_path(sc, cam.get_ray(i, j, s), s, settings.max_depth);
+                color L = estimator.radiance(cam.get_ray(i, j, s), s, settings.max_depth);
                 for (int c = 0; c < 3; ++c) {
                     double x     = double(L[c]);
                     double delta = x - mean[c];

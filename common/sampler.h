@@ -1,12 +1,16 @@
-// The source of every random number a render uses. Chapter 02.
+// The source of every random number a render uses. Chapter 01 (the pixel jitter of
+// anti-aliasing is its first use).
 // Each pixel sample owns one PCG32 stream, chosen by hash(pixel, seed) and advanced to
 // sample_index * 65536, so a pixel's value depends only on the scene, the settings and the seed:
 // never on the thread that renders it, nor on which part of the image is rendered (crops).
 //
-// Dimensions are drawn in a fixed order per camera sample; the layout is
-//   0-1 pixel jitter, 2-3 lens position, 4 shutter time,
-//   then per path segment: 2 for the ray's random key (next_key, used by participating media),
-//   then the material's own: lambertian 2, metal 3, dielectric 1, isotropic 2.
+// Dimensions are drawn in a fixed order per camera sample, and only where the scene uses them:
+//   the camera: 2 for the pixel jitter, then 2 for the lens position where the camera has a
+//   lens (aperture > 0, chapter 06), then 1 for the instant where its shutter is open
+//   (chapter 07);
+//   then per path segment, the material's own: lambertian 2, metal 3, dielectric 1,
+//   isotropic 2. Participating media (chapter 12) draw nothing: they hash the ray instead.
+// So a feature of a later chapter never moves the samples of an earlier chapter's scene.
 // Each pixel sample may use up to 65536 dimensions before it would overlap the next one.
 #pragma once
 
@@ -33,11 +37,6 @@ class sampler {
     }
 
     real next_1d() { return rng.uniform(); }
-    // 64 random bits (two dimensions).
-    std::uint64_t next_key() {
-        std::uint64_t high = rng.next_u32();
-        return (high << 32u) | rng.next_u32();
-    }
     sample2 next_2d() {
         real u = rng.uniform();
         return {u, rng.uniform()};

@@ -1,5 +1,5 @@
 // Warps from uniform numbers in [0,1)^2 to the shapes the renderer samples, each beside its
-// density. Chapter 03 (sphere, hemisphere), chapter 04 (ball), chapter 06 (disk).
+// density. Chapter 03 (disk, sphere, cosine hemisphere), chapter 04 (ball).
 // A pdf here is with respect to the natural measure of the domain: area for the disk, volume for
 // the ball, solid angle for directions.
 #pragma once
@@ -42,6 +42,7 @@ constexpr real uniform_sphere_pdf() {
     return 1 / (4 * pi);
 }
 
+// [ch04 begin]
 // Uniform point inside the unit ball: a uniform direction scaled by cbrt(w), since the volume
 // within radius r grows as r^3.
 inline vec3 sample_uniform_ball(sample2 s, real w) {
@@ -50,6 +51,7 @@ inline vec3 sample_uniform_ball(sample2 s, real w) {
 constexpr real uniform_ball_pdf() {
     return 3 / (4 * pi);
 }
+// [ch04 end]
 
 // Cosine-weighted direction about +z (Malley's method: a uniform disk point lifted to the
 // hemisphere). pdf = cos(theta) / pi, the distribution of an ideal diffuse reflector.

@@ -3,59 +3,17 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 
-#include "error.h"
+#include "validate.h"
 
 namespace rt {
 
-sphere::sphere(const point3& center, real radius, std::shared_ptr<material> m)
-    : sphere(center, center, radius, std::move(m)) {}
+namespace {
 
-sphere::sphere(const point3& c0, const point3& c1, real radius, std::shared_ptr<material> m)
-    : center0(c0),
-      center1(c1),
-      velocity(c1 - c0),
-      is_moving(!(c0.x() == c1.x() && c0.y() == c1.y() && c0.z() == c1.z())),
-      radius_(radius),
-      mat(std::move(m)) {
-    if (!(radius > 0) || !std::isfinite(radius)) {
-        std::ostringstream message;
-        message << "sphere radius must be positive and finite, got " << radius;
-        throw user_error(message.str());
-    }
-    if (!mat) throw user_error("sphere needs a material");
-    needs_uv = mat->uses_uv();
-}
-
-bool sphere::hit(const ray& r, interval ray_t, hit_record& rec) const {
-    // With f = A - C: a t^2 + 2 b t + c = 0, a = b.b, b = f.b, c = f.f - r^2.
-    const vec3& d = r.direction();
-    // Static spheres (most of them) skip the motion: the branch is predictable in any list.
-    point3 center = is_moving ? center_at(r.time()) : center0;
-    vec3 f        = r.origin() - center;
-    real a        = dot(d, d);
-    real b        = dot(f, d);
-    real c        = dot(f, f) - radius_ * radius_;
-
-    // Most spheres of a big list are clearly missed. The textbook discriminant b^2 - a c says so
-    // cheaply, but it cancels badly (distant or grazing spheres); trust its "miss" only when it
-    // is below minus its own rounding-error bound.
-    real bb = b * b, ac = a * c;
-    if (bb - ac < -8 * std::numeric_limits<real>::epsilon() * (bb + std::fabs(ac))) return false;
-
-    // b^2 - a c = a (r^2 - |f_perp|^2), where f_perp = f - (b/a) d is f minus its part along the
-    // ray: this form avoids subtracting two huge, nearly equal numbers. Scaled by a^2
-    // (g = a f_perp) so that it needs no division.
-    vec3 g               = a * f - b * d;
-    real a2_discriminant = radius_ * radius_ * a * a - dot(g, g);
-    if (a2_discriminant < 0) return false;
-    return record_hit(r, ray_t, rec, center, a, b, c, a2_discriminant);
-}
-
-// The rarer half of hit(), kept out of line so the common miss stays a short function.
-bool sphere::record_hit(const ray& r, interval ray_t, hit_record& rec, const point3& center, real a,
-                        real b, real c, real a2_discriminant) const {
+// The rarer half of hit_sphere(), kept out of line so the common miss stays a short function.
+[[gnu::noinline]] bool record_hit(const point3& center, real radius, const ray& r,
+                                  interval ray_t, hit_record& rec, real a, real b, real c,
+                                  real a2_discriminant) {
     // Stable roots: q never cancels, since b and sign(b) sqrt(...) add with the same sign.
     // sqrt(b^2 - a c) = sqrt(a * discriminant) = sqrt(a2_discriminant / a).
     real q     = -(b + std::copysign(std::sqrt(a2_discriminant / a), b));
@@ -75,28 +33,64 @@ bool sphere::record_hit(const ray& r, interval ray_t, hit_record& rec, const poi
     // whatever the distance travelled, which keeps the spawn offset small.
     vec3 from_center    = r.at(root) - center;
     vec3 outward_normal = from_center / from_center.length();
-    rec.p               = center + radius_ * outward_normal;
-    rec.p_error         = spawn_offset_scale * (max_abs_component(center) + radius_);
+    rec.p               = center + radius * outward_normal;
+    rec.p_error         = spawn_offset_scale * (max_abs_component(center) + radius);
     rec.set_face_normal(r, outward_normal);
-    if (needs_uv)
-        uv_from_normal(outward_normal, rec.u, rec.v);
-    else
-        rec.u = rec.v = 0;
-    rec.mat = mat.get();
+    rec.local = outward_normal;  // [ch08] what the texture coordinates come from
     return true;
 }
 
-aabb sphere::bounding_box() const {
-    vec3 extent(radius_, radius_, radius_);
-    aabb at_start(center0 - extent, center0 + extent);
-    return aabb(at_start, aabb(center1 - extent, center1 + extent));
+}  // namespace
+
+bool hit_sphere(const point3& center, real radius, const ray& r, interval ray_t,
+                hit_record& rec) {
+    // With f = A - C: a t^2 + 2 b t + c = 0, a = b.b, b = f.b, c = f.f - r^2.
+    const vec3& d = r.direction();
+    vec3 f        = r.origin() - center;
+    real a        = dot(d, d);
+    real b        = dot(f, d);
+    real c        = dot(f, f) - radius * radius;
+
+    // Most spheres of a big list are clearly missed. The textbook discriminant b^2 - a c says so
+    // cheaply, but it cancels badly (distant or grazing spheres); trust its "miss" only when it
+    // is below minus its own rounding-error bound.
+    real bb = b * b, ac = a * c;
+    if (bb - ac < -8 * std::numeric_limits<real>::epsilon() * (bb + std::fabs(ac))) return false;
+
+    // b^2 - a c = a (r^2 - |f_perp|^2), where f_perp = f - (b/a) d is f minus its part along the
+    // ray: this form avoids subtracting two huge, nearly equal numbers. Scaled by a^2
+    // (g = a f_perp) so that it needs no division.
+    vec3 g               = a * f - b * d;
+    real a2_discriminant = radius * radius * a * a - dot(g, g);
+    if (a2_discriminant < 0) return false;
+    return record_hit(center, radius, r, ray_t, rec, a, b, c, a2_discriminant);
 }
 
-void sphere::uv_from_normal(const vec3& n, real& u, real& v) {
+sphere::sphere(const point3& center, real radius) : center_(center), radius_(radius) {
+    require_positive(radius, "sphere radius");
+}
+
+// [ch03 begin]
+sphere::sphere(const point3& center, real radius, std::shared_ptr<material> m)
+    : sphere(center, radius) {
+    require_given(m, "sphere material");
+    mat = std::move(m);
+}
+// [ch03 end]
+
+bool sphere::hit(const ray& r, interval ray_t, hit_record& rec) const {
+    if (!hit_sphere(center_, radius_, r, ray_t, rec)) return false;
+    rec.mat    = mat.get();
+    rec.object = this;  // [ch08]
+    return true;
+}
+
+// [ch08 begin]
+surface_uv sphere::uv_from_normal(const vec3& n) {
     real theta = std::acos(std::clamp(-n.y(), real(-1), real(1)));
     real phi   = std::atan2(-n.z(), n.x()) + pi;
-    u          = phi / (2 * pi);
-    v          = theta / pi;
+    return {phi / (2 * pi), theta / pi};
 }
+// [ch08 end]
 
 }  // namespace rt

@@ -7,9 +7,9 @@ namespace rt {
 checker_texture::checker_texture(real scale, std::shared_ptr<texture> even_texture,
                                  std::shared_ptr<texture> odd_texture)
     : cell_size(scale), even(std::move(even_texture)), odd(std::move(odd_texture)) {
-    require_in_range(scale, std::numeric_limits<real>::min(), std::numeric_limits<real>::max(),
-                     "checker scale");
-    if (!even || !odd) throw user_error("checker texture needs two textures");
+    require_positive(scale, "checker scale");
+    require_given(even, "checker even texture");
+    require_given(odd, "checker odd texture");
 }
 
 }  // namespace rt

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 
+#include "hittable.h"
 #include "vec3.h"
 
 namespace rt {
@@ -17,9 +18,16 @@ class texture {
     // when it is an albedo, a radiance (any value >= 0) when a light emits it.
     virtual color value(real u, real v, const point3& p) const = 0;
 
-    // Whether value() reads (u, v): shapes skip computing them (a sphere's acos and atan2) when
-    // no texture of the hit's material needs them.
-    virtual bool uses_uv() const { return false; }
+    // Whether value() reads (u, v). Every texture must say (there is no default), so a new one
+    // cannot forget and silently get (0, 0): a hit's (u, v) are computed only when asked for.
+    virtual bool uses_uv() const = 0;
+
+    // The value at a hit, computing the hit's (u, v) only if this texture reads them.
+    color value_at(const hit_record& rec) const {
+        if (!uses_uv()) return value(0, 0, rec.p);
+        surface_uv uv = rec.uv();
+        return value(uv.u, uv.v, rec.p);
+    }
 };
 
 // The same color everywhere.
@@ -27,6 +35,7 @@ class solid_color : public texture {
   public:
     explicit solid_color(const color& c) : albedo(c) {}
     color value(real, real, const point3&) const override { return albedo; }
+    bool uses_uv() const override { return false; }
 
   private:
     color albedo;

@@ -1,23 +1,21 @@
 // Chapter 01: the background. With nothing in the scene every ray sees the sky, a blend from
 // white (looking down) to light blue (looking up) by the y of the ray's unit direction:
 //   color = (1 - a) * white + a * blue,   a = (y + 1) / 2.
-#include "common/options.h"
+#include <memory>
 
-// Nothing to hit: the camera at the origin looks down -z with a 90 degree vertical view.
-// (These are also the defaults of rt::scene and rt::camera, which later chapters rely on.)
-rt::scene empty_sky() {
-    rt::scene scene;
-    scene.sky              = rt::background::sky();
-    scene.cam.aspect_ratio = 16.0 / 9.0;
-    scene.cam.vfov         = 90;
-    scene.cam.lookfrom     = rt::point3(0, 0, 0);
-    scene.cam.lookat       = rt::point3(0, 0, -1);
-    return scene;
+#include "common/background.h"
+#include "common/command_line.h"
+
+// Nothing to hit: every ray sees the sky. The camera is chapter 01's own: at the origin, looking
+// down -z with a 90 degree vertical view, 16:9.
+rt::render_job empty_sky() {
+    rt::render_job job;
+    job.estimator = std::make_shared<rt::sky_only>(rt::background::sky());
+    // A gradient needs few samples; one segment per path, since nothing can be hit.
+    job.settings = {.width = 400, .samples_per_pixel = 4, .max_depth = 1};
+    return job;
 }
 
 int main(int argc, char** argv) {
-    // A gradient needs few samples; one segment per path, since nothing can be hit.
-    rt::command_line cli("ch01_background",
-                         {.width = 400, .render = {.samples_per_pixel = 4, .max_depth = 1}});
-    return cli.run(argc, argv, empty_sky);
+    return rt::command_line("ch01_background").run(argc, argv, empty_sky);
 }

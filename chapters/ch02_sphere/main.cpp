@@ -4,24 +4,27 @@
 // as the color 0.5 (n + 1). Several samples per pixel smooth the sphere's edge (anti-aliasing).
 #include <memory>
 
-#include "common/normal_shading.h"
-#include "common/options.h"
+#include "common/command_line.h"
+#include "common/hittable_list.h"
+#include "common/show_normals.h"
 #include "common/sphere.h"
 
 // A small sphere resting on a huge one that serves as the ground, both in one hittable_list.
 rt::scene sphere_on_ground() {
-    auto normals = std::make_shared<rt::normal_shading>();
+    auto world = std::make_shared<rt::hittable_list>();
+    world->add(std::make_shared<rt::sphere>(rt::point3(0, 0, -1), 0.5));
+    world->add(std::make_shared<rt::sphere>(rt::point3(0, -100.5, -1), 100));
 
     rt::scene scene;
-    scene.world.add(std::make_shared<rt::sphere>(rt::point3(0, 0, -1), 0.5, normals));
-    scene.world.add(std::make_shared<rt::sphere>(rt::point3(0, -100.5, -1), 100, normals));
+    scene.world = world;
     // The default sky and camera: at the origin looking down -z, vfov 90, 16:9.
+    // One segment per path: the normal is all a pixel shows.
+    scene.settings = {.width = 400, .samples_per_pixel = 100, .max_depth = 1};
     return scene;
 }
 
 int main(int argc, char** argv) {
-    // The normal shading absorbs every ray it colors, so one segment per path is enough.
-    rt::command_line cli("ch02_sphere",
-                         {.width = 400, .render = {.samples_per_pixel = 100, .max_depth = 1}});
-    return cli.run(argc, argv, sphere_on_ground);
+    return rt::command_line("ch02_sphere").run(argc, argv, [] {
+        return rt::show_normals(sphere_on_ground());
+    });
 }

@@ -5,7 +5,9 @@
 #include <memory>
 
 #include "common/lambertian.h"
-#include "common/options.h"
+#include "common/command_line.h"
+#include "common/hittable_list.h"
+#include "common/path_tracer.h"
 #include "common/quad.h"
 #include "common/sphere.h"
 
@@ -18,20 +20,24 @@ rt::scene matte_spheres_on_floor() {
     auto red   = std::make_shared<rt::lambertian>(color(0.7, 0.2, 0.1));
     auto white = std::make_shared<rt::lambertian>(color(0.9, 0.9, 0.9));
 
-    rt::scene scene;
+    auto world = std::make_shared<rt::hittable_list>();
     // The floor: y = -0.5, x in [-3, 3], z in [-4, 1]; its far edge shows the sky behind it.
-    scene.world.add(
+    world->add(
         std::make_shared<rt::quad>(point3(-3, -0.5, -4), vec3(6, 0, 0), vec3(0, 0, 5), floor));
-    scene.world.add(std::make_shared<rt::sphere>(point3(0, 0, -1.2), 0.5, blue));
-    scene.world.add(std::make_shared<rt::sphere>(point3(-1.1, 0, -1.5), 0.5, gray));
-    scene.world.add(std::make_shared<rt::sphere>(point3(1.1, 0, -1.5), 0.5, red));
-    scene.world.add(std::make_shared<rt::sphere>(point3(0.45, -0.35, -0.55), 0.15, white));
+    world->add(std::make_shared<rt::sphere>(point3(0, 0, -1.2), 0.5, blue));
+    world->add(std::make_shared<rt::sphere>(point3(-1.1, 0, -1.5), 0.5, gray));
+    world->add(std::make_shared<rt::sphere>(point3(1.1, 0, -1.5), 0.5, red));
+    world->add(std::make_shared<rt::sphere>(point3(0.45, -0.35, -0.55), 0.15, white));
+
+    rt::scene scene;
+    scene.world = world;
     // The default sky and camera: at the origin looking down -z, vfov 90, 16:9.
+    scene.settings = {.width = 400, .samples_per_pixel = 100, .max_depth = 50};
     return scene;
 }
 
 int main(int argc, char** argv) {
-    rt::command_line cli("ch03_diffuse",
-                         {.width = 400, .render = {.samples_per_pixel = 100, .max_depth = 50}});
-    return cli.run(argc, argv, matte_spheres_on_floor);
+    return rt::command_line("ch03_diffuse").run(argc, argv, [] {
+        return rt::path_trace(matte_spheres_on_floor());
+    });
 }

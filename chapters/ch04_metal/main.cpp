@@ -5,7 +5,9 @@
 
 #include "common/lambertian.h"
 #include "common/metal.h"
-#include "common/options.h"
+#include "common/command_line.h"
+#include "common/hittable_list.h"
+#include "common/path_tracer.h"
 #include "common/sphere.h"
 
 // Book 1's metal scene: a matte sphere between a polished and a fully fuzzy metal sphere.
@@ -16,17 +18,21 @@ rt::scene metal_spheres() {
     auto polished = std::make_shared<rt::metal>(color(0.8, 0.8, 0.8), 0.3);
     auto brushed  = std::make_shared<rt::metal>(color(0.8, 0.6, 0.2), 1.0);
 
+    auto world = std::make_shared<rt::hittable_list>();
+    world->add(std::make_shared<rt::sphere>(point3(0, -100.5, -1), 100, ground));
+    world->add(std::make_shared<rt::sphere>(point3(0, 0, -1), 0.5, center));
+    world->add(std::make_shared<rt::sphere>(point3(-1, 0, -1), 0.5, polished));
+    world->add(std::make_shared<rt::sphere>(point3(1, 0, -1), 0.5, brushed));
+
     rt::scene scene;
-    scene.world.add(std::make_shared<rt::sphere>(point3(0, -100.5, -1), 100, ground));
-    scene.world.add(std::make_shared<rt::sphere>(point3(0, 0, -1), 0.5, center));
-    scene.world.add(std::make_shared<rt::sphere>(point3(-1, 0, -1), 0.5, polished));
-    scene.world.add(std::make_shared<rt::sphere>(point3(1, 0, -1), 0.5, brushed));
+    scene.world = world;
     // The default sky and camera: at the origin looking down -z, vfov 90, 16:9.
+    scene.settings = {.width = 400, .samples_per_pixel = 100, .max_depth = 50};
     return scene;
 }
 
 int main(int argc, char** argv) {
-    rt::command_line cli("ch04_metal",
-                         {.width = 400, .render = {.samples_per_pixel = 100, .max_depth = 50}});
-    return cli.run(argc, argv, metal_spheres);
+    return rt::command_line("ch04_metal").run(argc, argv, [] {
+        return rt::path_trace(metal_spheres());
+    });
 }

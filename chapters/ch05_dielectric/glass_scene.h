@@ -11,7 +11,7 @@
 #include "common/metal.h"
 #include "common/sphere.h"
 
-inline rt::hittable_list glass_with_bubble() {
+inline std::shared_ptr<rt::hittable_list> glass_with_bubble() {
     using rt::color, rt::point3;
     auto ground = std::make_shared<rt::lambertian>(color(0.8, 0.8, 0.0));
     auto center = std::make_shared<rt::lambertian>(color(0.1, 0.2, 0.5));
@@ -19,11 +19,11 @@ inline rt::hittable_list glass_with_bubble() {
     auto bubble = std::make_shared<rt::dielectric>(1.0 / 1.5);
     auto mirror = std::make_shared<rt::metal>(color(0.8, 0.6, 0.2), 0.0);
 
-    rt::hittable_list world;
-    world.add(std::make_shared<rt::sphere>(point3(0, -100.5, -1), 100, ground));
-    world.add(std::make_shared<rt::sphere>(point3(0, 0, -1), 0.5, center));
-    world.add(std::make_shared<rt::sphere>(point3(-1, 0, -1), 0.5, glass));
-    world.add(std::make_shared<rt::sphere>(point3(-1, 0, -1), 0.4, bubble));
-    world.add(std::make_shared<rt::sphere>(point3(1, 0, -1), 0.5, mirror));
+    auto world = std::make_shared<rt::hittable_list>();
+    world->add(std::make_shared<rt::sphere>(point3(0, -100.5, -1), 100, ground));
+    world->add(std::make_shared<rt::sphere>(point3(0, 0, -1), 0.5, center));
+    world->add(std::make_shared<rt::sphere>(point3(-1, 0, -1), 0.5, glass));
+    world->add(std::make_shared<rt::sphere>(point3(-1, 0, -1), 0.4, bubble));
+    world->add(std::make_shared<rt::sphere>(point3(1, 0, -1), 0.5, mirror));
     return world;
 }

@@ -2,19 +2,21 @@
 // and reflects part of the light, more at grazing angles (Schlick's approximation of Fresnel).
 // One ray continues per hit: reflection with probability R, refraction otherwise; past the
 // critical angle there is only reflection (total internal reflection).
-#include "common/options.h"
+#include "common/command_line.h"
+#include "common/path_tracer.h"
 #include "glass_scene.h"
 
 // The glass sphere with its air bubble, seen from the origin down -z.
 rt::scene glass_scene_from_origin() {
     rt::scene scene;
-    scene.world            = glass_with_bubble();
+    scene.world = glass_with_bubble();
     // The default sky and camera: at the origin looking down -z, vfov 90, 16:9.
+    scene.settings = {.width = 400, .samples_per_pixel = 100, .max_depth = 50};
     return scene;
 }
 
 int main(int argc, char** argv) {
-    rt::command_line cli("ch05_dielectric",
-                         {.width = 400, .render = {.samples_per_pixel = 100, .max_depth = 50}});
-    return cli.run(argc, argv, glass_scene_from_origin);
+    return rt::command_line("ch05_dielectric").run(argc, argv, [] {
+        return rt::path_trace(glass_scene_from_origin());
+    });
 }

@@ -4,43 +4,55 @@
 // through the point of the focus plane (at --focus-dist) that the pinhole ray would hit, so only
 // that plane is sharp: the circle of confusion grows with the aperture and the distance from it.
 #include <cmath>
+#include <memory>
 #include <optional>
+#include <string>
 
 #include "ch05_dielectric/glass_scene.h"
-#include "common/options.h"
+#include "common/command_line.h"
+#include "common/path_tracer.h"
+#include "common/thin_lens_camera.h"
 #include "random_spheres.h"
 
 // The glass scene from above and to the side (the seed report's defocus camera).
 rt::scene glass_scene_through_lens(std::optional<double> aperture, std::optional<double> focus) {
+    auto cam        = std::make_shared<rt::thin_lens_camera>();
+    cam->vfov       = 20;
+    cam->lookfrom   = rt::point3(3, 3, 2);
+    cam->lookat     = rt::point3(0, 0, -1);
+    cam->aperture   = aperture.value_or(2.0);
+    cam->focus_dist = focus.value_or(0);  // 0: focus on lookat
+
     rt::scene scene;
-    scene.world          = glass_with_bubble();
-    scene.sky            = rt::background::sky();
-    scene.cam.vfov       = 20;
-    scene.cam.lookfrom   = rt::point3(3, 3, 2);
-    scene.cam.lookat     = rt::point3(0, 0, -1);
-    scene.cam.aperture   = aperture.value_or(2.0);
-    scene.cam.focus_dist = focus.value_or(0);  // 0: focus on lookat
+    scene.world    = glass_with_bubble();
+    scene.cam      = cam;
+    scene.settings = {.width = 400, .samples_per_pixel = 100, .max_depth = 50};
     return scene;
 }
 
 // Book 1's final scene; the book's defocus angle 0.6 degrees at focus distance 10 is a lens of
 // diameter 2 * 10 * tan(0.3 degrees).
 rt::scene final_scene(std::optional<double> aperture, std::optional<double> focus) {
+    auto cam        = std::make_shared<rt::thin_lens_camera>();
+    cam->vfov       = 20;
+    cam->lookfrom   = rt::point3(13, 2, 3);
+    cam->lookat     = rt::point3(0, 0, 0);
+    cam->focus_dist = focus.value_or(10.0);
+    cam->aperture = aperture.value_or(2 * cam->focus_dist * std::tan(rt::degrees_to_radians(0.3)));
+
+    auto world = std::make_shared<rt::hittable_list>();
+    for (auto& sphere : random_spheres()) world->add(sphere);
+
     rt::scene scene;
-    scene.world          = random_spheres();
-    scene.sky            = rt::background::sky();
-    scene.cam.vfov       = 20;
-    scene.cam.lookfrom   = rt::point3(13, 2, 3);
-    scene.cam.lookat     = rt::point3(0, 0, 0);
-    scene.cam.focus_dist = focus.value_or(10.0);
-    scene.cam.aperture =
-        aperture.value_or(2 * scene.cam.focus_dist * std::tan(rt::degrees_to_radians(0.3)));
+    scene.world = world;
+    scene.cam   = cam;
+    // The book's own settings for this scene: 1200 wide, 10 samples, depth 20.
+    scene.settings = {.width = 1200, .samples_per_pixel = 10, .max_depth = 20};
     return scene;
 }
 
 int main(int argc, char** argv) {
-    rt::command_line cli("ch06_defocus",
-                         {.width = 400, .render = {.samples_per_pixel = 100, .max_depth = 50}});
+    rt::command_line cli("ch06_defocus");
     std::optional<double> aperture, focus;
     std::string which = "glass";
     cli.app()
@@ -53,12 +65,7 @@ int main(int argc, char** argv) {
         .add_option("--scene", which, "glass, or final (book 1's random spheres)")
         ->check(CLI::IsMember({"glass", "final"}));
     return cli.run(argc, argv, [&] {
-        if (which == "glass") return glass_scene_through_lens(aperture, focus);
-        // The final scene's own defaults (book 1: 1200 wide, 10 spp, depth 20) unless given.
-        auto& settings = cli.settings();
-        if (!cli.given("--width")) settings.width = 1200;
-        if (!cli.given("--spp")) settings.render.samples_per_pixel = 10;
-        if (!cli.given("--max-depth")) settings.render.max_depth = 20;
-        return final_scene(aperture, focus);
+        return rt::path_trace(which == "glass" ? glass_scene_through_lens(aperture, focus)
+                                               : final_scene(aperture, focus));
     });
 }

@@ -2,21 +2,20 @@
 // ones, on a huge ground sphere. The small spheres' placement and materials come from a PCG32
 // with a fixed seed, so the scene is the same on every run and for every --seed (which only
 // changes the render's noise); it is statistically like the book's, not identical to it.
-// Chapter 07 reuses it as book 2's "bouncing spheres": the diffuse spheres then move up by a
-// random height during the shutter, and the ground is a checkerboard.
+// Chapter 07 reuses it as book 2's "bouncing spheres", where the diffuse spheres move.
 #pragma once
 
 #include <memory>
 
+#include <vector>
+
 #include "common/dielectric.h"
-#include "common/hittable_list.h"
 #include "common/lambertian.h"
 #include "common/metal.h"
 #include "common/rng.h"
 #include "common/sphere.h"
-#include "common/texture.h"
 
-inline rt::hittable_list random_spheres(bool bouncing = false) {
+inline std::vector<std::shared_ptr<rt::sphere>> random_spheres() {
     using rt::color, rt::point3, rt::vec3;
     rt::pcg32 rng(/*sequence=*/1, /*seed=*/2024);
     auto random_color = [&](double lo, double hi) {
@@ -25,11 +24,11 @@ inline rt::hittable_list random_spheres(bool bouncing = false) {
         return color(red, green, r());
     };
 
-    rt::hittable_list world;
-    auto ground = bouncing ? std::make_shared<rt::lambertian>(std::make_shared<rt::checker_texture>(
-                                 0.32, color(0.2, 0.3, 0.1), color(0.9, 0.9, 0.9)))
-                           : std::make_shared<rt::lambertian>(color(0.5, 0.5, 0.5));
-    world.add(std::make_shared<rt::sphere>(point3(0, -1000, 0), 1000, ground));
+    std::vector<std::shared_ptr<rt::sphere>> world;
+    auto add    = [&](point3 center, double radius, std::shared_ptr<rt::material> mat) {
+        world.push_back(std::make_shared<rt::sphere>(center, radius, std::move(mat)));
+    };
+    add(point3(0, -1000, 0), 1000, std::make_shared<rt::lambertian>(color(0.5, 0.5, 0.5)));
     for (int a = -11; a < 11; ++a) {
         for (int b = -11; b < 11; ++b) {
             double choose = rng.uniform();
@@ -38,23 +37,18 @@ inline rt::hittable_list random_spheres(bool bouncing = false) {
             if ((center - point3(4, 0.2, 0)).length() <= 0.9) continue;
 
             if (choose < 0.8) {  // diffuse, albedo = random * random per channel
-                auto mat = std::make_shared<rt::lambertian>(random_color(0, 1) * random_color(0, 1));
-                point3 end = bouncing ? center + vec3(0, 0.5 * rng.uniform(), 0) : center;
-                world.add(std::make_shared<rt::sphere>(center, end, 0.2, mat));
+                add(center, 0.2,
+                    std::make_shared<rt::lambertian>(random_color(0, 1) * random_color(0, 1)));
             } else if (choose < 0.95) {  // metal
-                auto mat = std::make_shared<rt::metal>(random_color(0.5, 1), 0.5 * rng.uniform());
-                world.add(std::make_shared<rt::sphere>(center, 0.2, mat));
+                add(center, 0.2,
+                    std::make_shared<rt::metal>(random_color(0.5, 1), 0.5 * rng.uniform()));
             } else {  // glass
-                world.add(std::make_shared<rt::sphere>(center, 0.2,
-                                                       std::make_shared<rt::dielectric>(1.5)));
+                add(center, 0.2, std::make_shared<rt::dielectric>(1.5));
             }
         }
     }
-    world.add(
-        std::make_shared<rt::sphere>(point3(0, 1, 0), 1.0, std::make_shared<rt::dielectric>(1.5)));
-    world.add(std::make_shared<rt::sphere>(point3(-4, 1, 0), 1.0,
-                                           std::make_shared<rt::lambertian>(color(0.4, 0.2, 0.1))));
-    world.add(std::make_shared<rt::sphere>(point3(4, 1, 0), 1.0,
-                                           std::make_shared<rt::metal>(color(0.7, 0.6, 0.5), 0.0)));
+    add(point3(0, 1, 0), 1.0, std::make_shared<rt::dielectric>(1.5));
+    add(point3(-4, 1, 0), 1.0, std::make_shared<rt::lambertian>(color(0.4, 0.2, 0.1)));
+    add(point3(4, 1, 0), 1.0, std::make_shared<rt::metal>(color(0.7, 0.6, 0.5), 0.0));
     return world;
 }

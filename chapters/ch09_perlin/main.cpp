@@ -5,41 +5,52 @@
 #include <memory>
 #include <string>
 
+#include "common/command_line.h"
+#include "common/hittable_list.h"
 #include "common/image_texture.h"
-#include "common/lambertian.h"
 #include "common/noise_texture.h"
-#include "common/options.h"
+#include "common/path_tracer.h"
 #include "common/sphere.h"
+#include "common/textured_lambertian.h"
+#include "common/thin_lens_camera.h"
 
 // Book 2's two Perlin spheres: a marble ground and a marble sphere sharing one texture.
 rt::scene perlin_spheres(const std::string& texture_file, bool with_globe) {
     using rt::point3;
-    auto marble = std::make_shared<rt::lambertian>(std::make_shared<rt::noise_texture>(4));
-    rt::scene scene;
-    scene.world.add(std::make_shared<rt::sphere>(point3(0, -1000, 0), 1000, marble));
+    auto marble =
+        std::make_shared<rt::textured_lambertian>(std::make_shared<rt::noise_texture>(4));
+    auto world = std::make_shared<rt::hittable_list>();
+    world->add(std::make_shared<rt::sphere>(point3(0, -1000, 0), 1000, marble));
     if (!with_globe) {
-        scene.world.add(std::make_shared<rt::sphere>(point3(0, 2, 0), 2, marble));
+        world->add(std::make_shared<rt::sphere>(point3(0, 2, 0), 2, marble));
     } else {  // the seed report's last figure: the image texture beside the noise
         auto earth = std::make_shared<rt::image_texture>(texture_file);
-        scene.world.add(std::make_shared<rt::sphere>(point3(0, 2, 2.2), 2, marble));
-        scene.world.add(std::make_shared<rt::sphere>(point3(0, 2, -2.2), 2,
-                                                     std::make_shared<rt::lambertian>(earth)));
+        world->add(std::make_shared<rt::sphere>(point3(0, 2, 2.2), 2, marble));
+        world->add(std::make_shared<rt::sphere>(
+            point3(0, 2, -2.2), 2, std::make_shared<rt::textured_lambertian>(earth)));
     }
-    scene.sky          = rt::background::uniform(rt::color(0.70, 0.80, 1.00));
-    scene.cam.vfov     = with_globe ? 30 : 20;
-    scene.cam.lookfrom = point3(13, 2, 3);
-    scene.cam.lookat   = point3(0, with_globe ? 1.5 : 0, 0);
+    auto cam      = std::make_shared<rt::thin_lens_camera>();
+    cam->vfov     = with_globe ? 30 : 20;
+    cam->lookfrom = point3(13, 2, 3);
+    cam->lookat   = point3(0, with_globe ? 1.5 : 0, 0);
+
+    rt::scene scene;
+    scene.world    = world;
+    scene.sky      = rt::background::uniform(rt::color(0.70, 0.80, 1.00));
+    scene.cam      = cam;
+    scene.settings = {.width = 400, .samples_per_pixel = 100, .max_depth = 50};
     return scene;
 }
 
 int main(int argc, char** argv) {
-    rt::command_line cli("ch09_perlin",
-                         {.width = 400, .render = {.samples_per_pixel = 100, .max_depth = 50}});
+    rt::command_line cli("ch09_perlin");
     std::string which = "marble", texture_file = RT_ASSET_DIR "/globe.png";
     cli.app()
         .add_option("--scene", which, "marble (book 2), or globe: the image texture beside it")
         ->check(CLI::IsMember({"marble", "globe"}))
         ->capture_default_str();
     cli.app().add_option("--texture", texture_file, "Image for the globe")->capture_default_str();
-    return cli.run(argc, argv, [&] { return perlin_spheres(texture_file, which == "globe"); });
+    return cli.run(argc, argv, [&] {
+        return rt::path_trace(perlin_spheres(texture_file, which == "globe"));
+    });
 }

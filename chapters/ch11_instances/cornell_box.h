@@ -5,13 +5,16 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "common/box.h"
+#include "common/bvh.h"
 #include "common/diffuse_light.h"
 #include "common/instance.h"
 #include "common/lambertian.h"
 #include "common/quad.h"
 #include "common/scene.h"
+#include "common/thin_lens_camera.h"
 
 struct cornell_light {
     rt::point3 Q;
@@ -21,37 +24,51 @@ struct cornell_light {
 
 // A box of the given size turned about y by `degrees`, then moved by `offset`: the way book 2
 // places the Cornell boxes (rotate first, about the box's own corner, then translate).
-inline std::shared_ptr<rt::hittable> placed_box(rt::vec3 size, double degrees, rt::vec3 offset,
-                                                std::shared_ptr<rt::material> mat) {
+inline std::shared_ptr<rt::translate> placed_box(rt::vec3 size, double degrees, rt::vec3 offset,
+                                                 std::shared_ptr<rt::material> mat) {
     auto shape  = rt::box(rt::point3(0, 0, 0), rt::point3(size.x(), size.y(), size.z()), mat);
     auto turned = std::make_shared<rt::rotate>(shape, rt::axis::y, degrees);
     return std::make_shared<rt::translate>(turned, offset);
 }
 
-// The room with the given light; `white` is returned for the boxes inside.
-inline rt::scene cornell_room(const cornell_light& light_quad,
-                              std::shared_ptr<rt::lambertian>& white) {
+// The room's walls and light; its white is returned too, for the boxes inside.
+struct cornell_room {
+    std::vector<rt::bounded_object> walls;
+    std::shared_ptr<rt::lambertian> white;
+};
+
+inline cornell_room empty_cornell_room(const cornell_light& light_quad) {
     using rt::color, rt::point3, rt::vec3;
     auto red   = std::make_shared<rt::lambertian>(color(0.65, 0.05, 0.05));
     auto green = std::make_shared<rt::lambertian>(color(0.12, 0.45, 0.15));
     auto light = std::make_shared<rt::diffuse_light>(color(1, 1, 1) * light_quad.radiance);
-    white      = std::make_shared<rt::lambertian>(color(0.73, 0.73, 0.73));
+    cornell_room room{{}, std::make_shared<rt::lambertian>(color(0.73, 0.73, 0.73))};
 
-    rt::scene scene;
     auto add_quad = [&](point3 Q, vec3 u, vec3 v, std::shared_ptr<rt::material> m) {
-        scene.world.add(std::make_shared<rt::quad>(Q, u, v, std::move(m)));
+        room.walls.emplace_back(std::make_shared<rt::quad>(Q, u, v, std::move(m)));
     };
     add_quad(point3(555, 0, 0), vec3(0, 555, 0), vec3(0, 0, 555), green);
     add_quad(point3(0, 0, 0), vec3(0, 555, 0), vec3(0, 0, 555), red);
     add_quad(light_quad.Q, light_quad.u, light_quad.v, light);
-    add_quad(point3(0, 0, 0), vec3(555, 0, 0), vec3(0, 0, 555), white);          // floor
-    add_quad(point3(555, 555, 555), vec3(-555, 0, 0), vec3(0, 0, -555), white);  // ceiling
-    add_quad(point3(0, 0, 555), vec3(555, 0, 0), vec3(0, 555, 0), white);        // back
+    add_quad(point3(0, 0, 0), vec3(555, 0, 0), vec3(0, 0, 555), room.white);          // floor
+    add_quad(point3(555, 555, 555), vec3(-555, 0, 0), vec3(0, 0, -555), room.white);  // ceiling
+    add_quad(point3(0, 0, 555), vec3(555, 0, 0), vec3(0, 555, 0), room.white);        // back
+    return room;
+}
 
-    scene.sky              = rt::background::uniform(color(0, 0, 0));
-    scene.cam.aspect_ratio = 1;
-    scene.cam.vfov         = 40;
-    scene.cam.lookfrom     = point3(278, 278, -800);
-    scene.cam.lookat       = point3(278, 278, 0);
+// The room with what was put in it, seen by book 2's Cornell camera in the dark. The objects go
+// into a BVH: the same image as a list (tested in chapter 07), faster.
+inline rt::scene cornell_scene(const std::vector<rt::bounded_object>& objects) {
+    auto cam          = std::make_shared<rt::thin_lens_camera>();
+    cam->aspect_ratio = 1;
+    cam->vfov         = 40;
+    cam->lookfrom     = rt::point3(278, 278, -800);
+    cam->lookat       = rt::point3(278, 278, 0);
+
+    rt::scene scene;
+    scene.world    = std::make_shared<rt::bvh>(objects);
+    scene.sky      = rt::background::uniform(rt::color(0, 0, 0));
+    scene.cam      = cam;
+    scene.settings = {.width = 600, .samples_per_pixel = 200, .max_depth = 50};
     return scene;
 }

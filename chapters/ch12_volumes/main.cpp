@@ -5,14 +5,15 @@
 #include <memory>
 
 #include "ch11_instances/cornell_box.h"
+#include "common/command_line.h"
 #include "common/constant_medium.h"
-#include "common/bvh.h"
-#include "common/options.h"
+#include "common/path_tracer.h"
 
 // Chapter 11's placed box as the boundary of a medium of density 0.01 (the boundary's own
 // material is never seen: the medium replaces its surface).
-std::shared_ptr<rt::hittable> smoke_box(rt::vec3 size, double degrees, rt::vec3 offset,
-                                        rt::color albedo, std::shared_ptr<rt::material> any) {
+std::shared_ptr<rt::constant_medium> smoke_box(rt::vec3 size, double degrees, rt::vec3 offset,
+                                               rt::color albedo,
+                                               std::shared_ptr<rt::material> any) {
     return std::make_shared<rt::constant_medium>(placed_box(size, degrees, offset, any), 0.01,
                                                  albedo);
 }
@@ -20,18 +21,18 @@ std::shared_ptr<rt::hittable> smoke_box(rt::vec3 size, double degrees, rt::vec3 
 // Book 2's Cornell smoke: the two boxes become black smoke and white fog, under a bigger light.
 rt::scene cornell_smoke() {
     using rt::color, rt::point3, rt::vec3;
-    std::shared_ptr<rt::lambertian> white;
-    rt::scene scene = cornell_room({point3(113, 554, 127), vec3(330, 0, 0), vec3(0, 0, 305), 7},
-                                   white);
-    scene.world.add(smoke_box(vec3(165, 330, 165), 15, vec3(265, 0, 295), color(0, 0, 0), white));
-    scene.world.add(smoke_box(vec3(165, 165, 165), -18, vec3(130, 0, 65), color(1, 1, 1), white));
-    // A BVH over the walls and boxes: the same image as a list (tested in chapter 07), faster.
-    scene.world = rt::hittable_list(std::make_shared<rt::bvh>(scene.world.objects));
-    return scene;
+    cornell_room room =
+        empty_cornell_room({point3(113, 554, 127), vec3(330, 0, 0), vec3(0, 0, 305), 7});
+    auto objects = room.walls;
+    objects.emplace_back(
+        smoke_box(vec3(165, 330, 165), 15, vec3(265, 0, 295), color(0, 0, 0), room.white));
+    objects.emplace_back(
+        smoke_box(vec3(165, 165, 165), -18, vec3(130, 0, 65), color(1, 1, 1), room.white));
+    return cornell_scene(objects);
 }
 
 int main(int argc, char** argv) {
-    rt::command_line cli("ch12_volumes",
-                         {.width = 600, .render = {.samples_per_pixel = 200, .max_depth = 50}});
-    return cli.run(argc, argv, cornell_smoke);
+    return rt::command_line("ch12_volumes").run(argc, argv, [] {
+        return rt::path_trace(cornell_smoke());
+    });
 }

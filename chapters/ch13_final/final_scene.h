@@ -14,16 +14,19 @@
 #include "common/instance.h"
 #include "common/lambertian.h"
 #include "common/metal.h"
+#include "common/moving_sphere.h"
 #include "common/noise_texture.h"
 #include "common/quad.h"
 #include "common/rng.h"
 #include "common/scene.h"
 #include "common/sphere.h"
+#include "common/textured_lambertian.h"
+#include "common/thin_lens_camera.h"
 
 inline rt::scene book2_final_scene(const std::string& globe_texture) {
     using rt::color, rt::point3, rt::vec3;
     rt::pcg32 rng(/*sequence=*/13, /*seed=*/2024);
-    std::vector<std::shared_ptr<rt::hittable>> objects;
+    std::vector<rt::bounded_object> objects;
 
     // Ground: 20 x 20 boxes of random height; their faces go straight into the BVH.
     auto ground = std::make_shared<rt::lambertian>(color(0.48, 0.83, 0.53));
@@ -41,7 +44,7 @@ inline rt::scene book2_final_scene(const std::string& globe_texture) {
         std::make_shared<rt::quad>(point3(123, 554, 147), vec3(300, 0, 0), vec3(0, 0, 265), light));
 
     // A sphere moving 30 units during the shutter, glass, brushed metal.
-    objects.push_back(std::make_shared<rt::sphere>(
+    objects.push_back(std::make_shared<rt::moving_sphere>(
         point3(400, 400, 200), point3(430, 400, 200), 50,
         std::make_shared<rt::lambertian>(color(0.7, 0.3, 0.1))));
     objects.push_back(std::make_shared<rt::sphere>(point3(260, 150, 45), 50,
@@ -63,14 +66,15 @@ inline rt::scene book2_final_scene(const std::string& globe_texture) {
     // The globe and a marble sphere.
     objects.push_back(std::make_shared<rt::sphere>(
         point3(400, 200, 400), 100,
-        std::make_shared<rt::lambertian>(std::make_shared<rt::image_texture>(globe_texture))));
+        std::make_shared<rt::textured_lambertian>(
+            std::make_shared<rt::image_texture>(globe_texture))));
     objects.push_back(std::make_shared<rt::sphere>(
         point3(220, 280, 300), 80,
-        std::make_shared<rt::lambertian>(std::make_shared<rt::noise_texture>(0.1))));
+        std::make_shared<rt::textured_lambertian>(std::make_shared<rt::noise_texture>(0.1))));
 
     // A cluster of 1000 small spheres in its own BVH, turned and moved as one instance.
     auto white = std::make_shared<rt::lambertian>(color(0.73, 0.73, 0.73));
-    std::vector<std::shared_ptr<rt::hittable>> cluster;
+    std::vector<rt::bounded_object> cluster;
     for (int k = 0; k < 1000; ++k) {
         double x = 165 * rng.uniform(), y = 165 * rng.uniform(), z = 165 * rng.uniform();
         cluster.push_back(std::make_shared<rt::sphere>(point3(x, y, z), 10, white));
@@ -79,12 +83,19 @@ inline rt::scene book2_final_scene(const std::string& globe_texture) {
         std::make_shared<rt::rotate>(std::make_shared<rt::bvh>(cluster), rt::axis::y, 15),
         vec3(-100, 270, 395)));
 
+    auto cam           = std::make_shared<rt::thin_lens_camera>();
+    cam->aspect_ratio  = 1;
+    cam->vfov          = 40;
+    cam->lookfrom      = point3(478, 278, -600);
+    cam->lookat        = point3(278, 278, 0);
+    cam->shutter_close = 1;  // the moving sphere blurs
+
     rt::scene scene;
-    scene.world.add(std::make_shared<rt::bvh>(objects));
-    scene.sky              = rt::background::uniform(color(0, 0, 0));
-    scene.cam.aspect_ratio = 1;
-    scene.cam.vfov         = 40;
-    scene.cam.lookfrom     = point3(478, 278, -600);
-    scene.cam.lookat       = point3(278, 278, 0);
+    scene.world = std::make_shared<rt::bvh>(objects);
+    scene.sky   = rt::background::uniform(color(0, 0, 0));
+    scene.cam   = cam;
+    // The book's default run, final_scene(400, 250, 4); its "real" run is 800 wide, 10000 spp,
+    // depth 40.
+    scene.settings = {.width = 400, .samples_per_pixel = 250, .max_depth = 4};
     return scene;
 }

@@ -5,13 +5,13 @@
 // (final_scene(400, 250, 4)); its "real" run is --width 800 --spp 10000 --max-depth 40.
 #include <string>
 
-#include "common/options.h"
+#include "common/command_line.h"
+#include "common/path_tracer.h"
 #include "final_scene.h"
 
 int main(int argc, char** argv) {
-    rt::command_line cli("ch13_final",
-                         {.width = 400, .render = {.samples_per_pixel = 250, .max_depth = 4}});
+    rt::command_line cli("ch13_final");
     std::string texture_file = RT_ASSET_DIR "/globe.png";
     cli.app().add_option("--texture", texture_file, "Image for the globe")->capture_default_str();
-    return cli.run(argc, argv, [&] { return book2_final_scene(texture_file); });
+    return cli.run(argc, argv, [&] { return rt::path_trace(book2_final_scene(texture_file)); });
 }

@@ -1,0 +1,40 @@
+// The command line every chapter shares (CLI11). Chapter 01.
+//   chNN_name [--width N] [--spp N] [--max-depth N] [--seed N] [--threads N] [--out FILE]...
+//             [--variance-out FILE] [--quiet] [--help]
+// It only parses: the scene brings its own default settings (render_job::settings) and a flag
+// the user gives overrides that one setting. A chapter may add flags of its own through app().
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "render.h"
+
+namespace rt {
+
+class command_line {
+  public:
+    explicit command_line(std::string program_name);
+
+    CLI::App& app() { return cli; }
+    const std::string& name() const { return program; }
+
+    // Parses the arguments, then builds the job (so chapter flags can choose the scene), puts
+    // the flags given over the job's settings, renders and writes every output. Returns the exit
+    // code: 0 on success (or --help), 2 for a user error with one line on stderr naming it.
+    int run(int argc, char** argv, const std::function<render_job()>& build);
+
+  private:
+    // The job's settings with every flag the user gave put over them.
+    render_settings with_flags(render_settings scene_defaults) const;
+
+    std::string program;
+    render_settings flags;             // the values parsed; only those given are used
+    std::vector<std::string> outputs;  // .png and/or .pfm files; default "<name>.png"
+    std::string variance_output;       // optional .pfm of the per-pixel variance of the mean
+    CLI::App cli;
+};
+
+}  // namespace rt

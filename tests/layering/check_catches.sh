@@ -1,0 +1,162 @@
+#!/usr/bin/env bash
+# tools/check-layers and tools/chapter-diff on a tiny fixture repo of two chapters, built afresh
+# in a temp dir for every case: the clean fixture passes, and each kind of breach is caught.
+#   tests/layering/check_catches.sh [CASE...]     (no CASE: all of them; names below, case_*)
+# Prints "ok CASE" or "FAIL CASE: why" per assertion; exit code 1 on any failure.
+set -uo pipefail
+tools=$(cd "$(dirname "$0")/../../tools" && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+
+# The clean fixture: ch01 owns base.h/.cpp, ch02 owns extra.h and adds two lines to base.h.
+# Its traps: a package header, a test tag and a URL in strings, "extra.h" reached through the
+# common/ include folder, and an image.
+make_fixture() {
+    local repo=$1
+    mkdir -p "$repo"/{common,chapters/ch01_first,chapters/ch02_second,tests/ch01,tests/ch02,tests/cli}
+    printf '# fixture\nch01  base.h base.cpp\nch02  extra.h\n' >"$repo/common/layers.txt"
+    cat >"$repo/common/base.h" <<'EOF'
+// The first idea. Chapter 01.
+#pragma once
+#include <vector>
+#include "CLI/CLI.hpp"
+struct base {
+    int value = 1;
+    const char* home = "http://example.org/[ch02]";
+    int shutter = 0;  // [ch02] the instant a ray leaves
+    // [ch02 begin]
+    int hook() const { return 2; }
+    // [ch02 end]
+    int last = 3;
+};
+EOF
+    printf '#include "base.h"\nint base_value() { return base{}.value; }\n' >"$repo/common/base.cpp"
+    printf '#pragma once\n#include "base.h"\n#include "common/base.h"\nstruct extra { int width = 3; };\n' \
+        >"$repo/common/extra.h"
+    printf '#include "common/base.h"\nint main() { return 0; }\n' >"$repo/chapters/ch01_first/main.cpp"
+    printf '#pragma once\n#include "extra.h"\n' >"$repo/chapters/ch02_second/scene.h"
+    printf '#include "common/extra.h"\n#include "scene.h"\nint main() { return 0; }\n' \
+        >"$repo/chapters/ch02_second/main.cpp"
+    printf '#pragma once\n#include "common/base.h"\n' >"$repo/tests/test_helpers.h"
+    printf '#include "test_helpers.h"\nTEST_CASE("base", "[ch02]") {}\n' >"$repo/tests/ch01/test_base.cpp"
+    printf '#include "test_helpers.h"\n#include "extra.h"\n' >"$repo/tests/ch02/test_extra.cpp"
+    printf '\x89PNG\r\n\x1a\n\0\0' >"$repo/tests/cli/picture.png"
+}
+
+fail() { echo "FAIL $case: $*"; failures=$((failures + 1)); }
+
+# run TOOL ARGS...: runs a tool, leaving its exit code in $rc, stdout in $out, stderr in $err.
+run() {
+    "$tools/$1" "${@:2}" >"$work/out" 2>"$work/err"
+    rc=$?
+    out=$(cat "$work/out") err=$(cat "$work/err")
+}
+
+# breach DESCRIPTION COUNT WORD...: check-layers must exit 1 with COUNT findings, one of which
+# names every WORD. The fixture was changed just before.
+breach() {
+    local what=$1 count=$2 line
+    shift 2
+    run check-layers --root "$repo"
+    line=$err
+    for word; do line=$(grep -F -- "$word" <<<"$line"); done
+    if [ "$rc" -ne 1 ]; then fail "$what: exit code $rc, not 1; stderr: $err"
+    elif [ "$(grep -c . <<<"$err")" -ne "$count" ]; then fail "$what: not $count findings: $err"
+    elif [ -z "$line" ]; then fail "$what: no finding names all of '$*': $err"
+    else echo "ok $case: $what -> $(head -1 <<<"$line")"; fi
+}
+
+# has / lacks TEXT: chapter-diff's output holds (or lacks) this exact line.
+has() { grep -qxF -- "$1" <<<"$out" && echo "ok $case: shows '$1'" || fail "no line '$1' in: $out${err:+ (stderr: $err)}"; }
+lacks() { grep -qF -- "$1" <<<"$out" && fail "'$1' should be hidden: $out" || echo "ok $case: hides '$1'"; }
+
+case_check_passes_clean_fixture() {
+    run check-layers --root "$repo"
+    if [ "$rc" -ne 0 ] || [ -n "$err" ]; then fail "clean fixture: exit code $rc; stderr: $err"
+    elif [ "$out" != "check-layers: 9 files, 11 includes, 4 marked lines: layering holds" ]; then
+        fail "clean fixture: unexpected summary '$out'"
+    else echo "ok $case: $out"; fi
+}
+case_check_catches_early_includes_later() {
+    echo '#include "extra.h"' >>"$repo/common/base.h"
+    breach "ch01 header includes a ch02 header" 1 "common/base.h:14 (ch01)" "common/extra.h (ch02)"
+}
+case_check_catches_chapter_main_includes_later() {
+    echo '#include "common/extra.h"' >>"$repo/chapters/ch01_first/main.cpp"
+    breach "ch01 main includes a ch02 header" 1 "chapters/ch01_first/main.cpp:3" "common/extra.h (ch02)"
+}
+case_check_catches_test_includes_later() {
+    echo '#include "extra.h"' >>"$repo/tests/test_helpers.h"
+    breach "shared test helper includes a ch02 header" 1 "tests/test_helpers.h:3 (ch01)" "common/extra.h"
+}
+case_check_catches_marked_include() {
+    echo '#include "extra.h"  // [ch02] only chapter 02 uses it' >>"$repo/common/base.cpp"
+    breach "marked include still counts" 1 "common/base.cpp:3" "common/extra.h (ch02)" "marked [ch02]"
+}
+case_check_catches_marker_not_later() {
+    echo 'int depth = 0;  // [ch02] same chapter as the file' >>"$repo/common/extra.h"
+    breach "marker of the file's own chapter" 1 "common/extra.h:5" "[ch02]" "not later"
+    make_fixture "$repo.2" && repo=$repo.2
+    echo 'int depth = 0;  // [ch01] earlier than the file' >>"$repo/common/extra.h"
+    breach "marker of an earlier chapter" 1 "common/extra.h:5" "[ch01]" "not later"
+}
+case_check_catches_unbalanced_markers() {
+    echo '// [ch02 begin] never closed' >>"$repo/common/base.h"
+    breach "begin without end" 1 "common/base.h:14" "[ch02 begin] has no end"
+    make_fixture "$repo.2" && repo=$repo.2
+    echo '// [ch02 end]' >>"$repo/common/base.cpp"
+    breach "end without begin" 1 "common/base.cpp:3" "[ch02 end] has no begin"
+    make_fixture "$repo.3" && repo=$repo.3
+    sed -i 's|// \[ch02 begin\]|&\n// [ch02 begin]|' "$repo/common/base.h"
+    breach "nested begin" 1 "common/base.h:10" "do not nest"
+}
+case_check_catches_unlisted_common_file() {
+    echo '#pragma once' >"$repo/common/stray.h"
+    breach "common file missing from layers.txt" 1 "common/stray.h is not listed"
+    echo '#include "common/stray.h"' >>"$repo/chapters/ch02_second/main.cpp"
+    breach "include of an unlisted common file" 2 "chapters/ch02_second/main.cpp:4" \
+        "common/stray.h, which is not listed"
+    make_fixture "$repo.2" && repo=$repo.2
+    echo 'ch02  base.cpp ghost.h' >>"$repo/common/layers.txt"
+    breach "file listed twice" 2 "base.cpp is listed twice"
+    breach "listed file that does not exist" 2 "common/ghost.h is listed" "does not exist"
+}
+case_chapter_diff_shows_new_file() {
+    run chapter-diff ch02 --root "$repo"
+    has "--- /dev/null" && has "+++ b/common/extra.h" && has "+struct extra { int width = 3; };"
+    has "+++ b/chapters/ch02_second/main.cpp" && has "+++ b/tests/ch02/test_extra.cpp"
+    has "chapter-diff ch02: 4 new files (11 lines), 1 earlier file changed (+4 lines)"
+}
+case_chapter_diff_shows_marked_lines() {
+    run chapter-diff ch02 --root "$repo"
+    has "--- a/common/base.h" && has "+++ b/common/base.h" && has "     int value = 1;"
+    has "+    int shutter = 0;  // [ch02] the instant a ray leaves"
+    has "+    // [ch02 begin]" && has "+    int hook() const { return 2; }" && has "+    // [ch02 end]"
+    grep -q $'\033' <<<"$out" && fail "colour codes in piped output" || echo "ok $case: no colour when piped"
+}
+case_chapter_diff_hides_later_lines() {
+    run chapter-diff ch01 --root "$repo"
+    has "+++ b/common/base.h" && has "+    int value = 1;" && has "+    int last = 3;"
+    lacks "shutter" && lacks "hook" && lacks "extra"
+    has "Binary file b/tests/cli/picture.png is new" && lacks "PNG"
+}
+case_chapter_diff_refuses_unknown_chapter() {
+    local chapter
+    for chapter in ch03 chapter2; do
+        run chapter-diff "$chapter" --root "$repo"
+        if [ "$rc" -ne 2 ] || [ "$(grep -c . <<<"$err")" -ne 1 ] || [ -n "$out" ]; then
+            fail "$chapter: exit code $rc (not 2), stdout '$out', stderr '$err'"
+        else echo "ok $case: $chapter -> $err"; fi
+    done
+}
+
+cases=("$@")
+[ $# -gt 0 ] || mapfile -t cases < <(declare -F | sed -n 's/^declare -f case_//p')
+for case in "${cases[@]}"; do
+    declare -F "case_$case" >/dev/null || { fail "no such case"; continue; }
+    repo=$work/$case
+    make_fixture "$repo"
+    "case_$case"
+done
+[ "$failures" -eq 0 ] || { echo "$failures assertion(s) failed"; exit 1; }
