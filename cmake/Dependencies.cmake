@@ -35,3 +35,9 @@ add_library(rt_warnings INTERFACE)
 target_compile_options(rt_warnings INTERFACE -Wall -Wextra -Wpedantic -Wshadow -Wconversion
                                              -Wno-sign-conversion
                                              -Wno-missing-field-initializers)
+# The test command (tools/run-tests) builds with warnings as errors, so CI fails on a warning;
+# a student's own build only shows them.
+option(RT_WERROR "Treat compiler warnings as errors" OFF)
+if(RT_WERROR)
+  target_compile_options(rt_warnings INTERFACE -Werror)
+endif()

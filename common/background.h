@@ -31,7 +31,9 @@ struct background {
 class sky_only : public radiance_estimator {
   public:
     explicit sky_only(const background& b) : sky(b) {}
-    color radiance(const ray& r, sampler&, int) const override { return sky.radiance(r.direction()); }
+    color radiance(const ray& r, sampler&, int) const override {
+        return sky.radiance(r.direction());
+    }
 
   private:
     background sky;

@@ -38,7 +38,7 @@ bvh::bvh(const std::vector<bounded_object>& input) {
     std::vector<build_item> items(input.size());
     for (std::size_t i = 0; i < input.size(); ++i) {
         const aabb& box = input[i].box;
-        items[i] = {box, box.centroid(), std::uint32_t(i)};
+        items[i]        = {box, box.centroid(), std::uint32_t(i)};
     }
     nodes.reserve(2 * input.size());
     if (!items.empty()) build(items, 0, items.size(), 1);

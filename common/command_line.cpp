@@ -41,6 +41,8 @@ void print_summary(const std::string& name, const film& f, const render_settings
 
 command_line::command_line(std::string program_name)
     : program(std::move(program_name)), cli(program) {
+    // A flag given twice takes its last value, as most Unix tools do.
+    cli.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
     cli.add_option("--width", flags.width, "Image width in pixels (default: the scene's)")
         ->check(CLI::Range(1, 16384));
     cli.add_option("--spp", flags.samples_per_pixel, "Samples per pixel (default: the scene's)")
@@ -53,6 +55,7 @@ command_line::command_line(std::string program_name)
         ->check(CLI::Range(0, 1024))
         ->capture_default_str();
     cli.add_option("--out", outputs, "Output image, .png or .pfm; may repeat")
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
         ->check(output_file({".png", ".pfm"}));
     cli.add_option("--variance-out", variance_output,
                    "Also write the variance of each pixel's mean, as .pfm")

@@ -21,8 +21,8 @@ constant_medium::constant_medium(const bounded_object& b, real density,
     require_positive(density, "medium density");
     phase_function = std::make_shared<isotropic>(std::move(albedo));
     id             = hash_values(bits_of(density),
-                           hash_values(bits_of(box.x.min), bits_of(box.y.min), bits_of(box.z.min)),
-                           hash_values(bits_of(box.x.max), bits_of(box.y.max), bits_of(box.z.max)));
+                                 hash_values(bits_of(box.x.min), bits_of(box.y.min), bits_of(box.z.min)),
+                                 hash_values(bits_of(box.x.max), bits_of(box.y.max), bits_of(box.z.max)));
 }
 
 bool constant_medium::hit(const ray& r, interval ray_t, hit_record& rec) const {
@@ -35,8 +35,8 @@ bool constant_medium::hit(const ray& r, interval ray_t, hit_record& rec) const {
     real t_out = std::fmin(exit.t, ray_t.max);
     if (!(t_in < t_out)) return false;
 
-    const real speed  = r.direction().length();
-    const real inside = (t_out - t_in) * speed;
+    const real speed    = r.direction().length();
+    const real inside   = (t_out - t_in) * speed;
     const real distance = neg_inv_density * std::log(random_for(r));
     if (distance > inside) return false;
 

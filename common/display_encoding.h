@@ -1,4 +1,4 @@
-// From linear light to the numbers a screen expects. Chapter 03.
+// From linear light to the numbers a screen expects. Chapter 01 (every PNG is written with it).
 // We use the sRGB transfer curve (IEC 61966-2-1), the one PNG viewers assume, not the book's
 // gamma 2 (sqrt): V = 12.92 L for L <= 0.0031308, else 1.055 L^(1/2.4) - 0.055.
 #pragma once

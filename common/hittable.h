@@ -11,7 +11,7 @@
 
 namespace rt {
 
-class material;
+class material;  // [ch03]
 class hittable;
 
 // Relative size of the offset that moves a new ray's origin off the surface it leaves.
@@ -29,7 +29,7 @@ struct surface_uv {
 struct hit_record {
     point3 p;
     vec3 normal;                    // unit, facing against the incoming ray
-    const material* mat = nullptr;  // owned by the scene, never null for a hit
+    const material* mat = nullptr;  // [ch03] owned by the scene; null for chapter 02's spheres
     real t              = 0;
     real p_error        = 0;     // bound on the distance of p from the true surface
     bool front_face     = true;  // the ray arrived from the outside
@@ -48,6 +48,7 @@ struct hit_record {
         normal     = front_face ? outward_normal : -outward_normal;
     }
 
+    // [ch03 begin]
     // The next segment of r_in's path, leaving this hit in `direction`. Why not the book's
     // t > 0.001: that constant is too big for tiny objects and too small for huge or distant
     // ones. Instead the origin moves along the normal, to the side the new ray leaves by, farther
@@ -63,6 +64,7 @@ struct hit_record {
     ray spawn_reflected_ray(const ray& r_in, const vec3& direction) const {
         return r_in.continued(p + p_error * normal, direction);
     }
+    // [ch03 end]
 };
 
 class hittable {

@@ -9,9 +9,9 @@ namespace rt {
 translate::translate(const bounded_object& obj, const vec3& displacement)
     : object(obj.object), offset(displacement) {
     const aabb& b = obj.box;
-    box    = aabb(interval(b.x.min + offset.x(), b.x.max + offset.x()),
-                  interval(b.y.min + offset.y(), b.y.max + offset.y()),
-                  interval(b.z.min + offset.z(), b.z.max + offset.z()));
+    box           = aabb(interval(b.x.min + offset.x(), b.x.max + offset.x()),
+                         interval(b.y.min + offset.y(), b.y.max + offset.y()),
+                         interval(b.z.min + offset.z(), b.z.max + offset.z()));
 }
 
 bool translate::hit(const ray& r, interval ray_t, hit_record& rec) const {

@@ -67,7 +67,8 @@ inline real schlick_reflectance_incident(real cos_incident, real eta) {
 
 // The exact Fresnel reflectance of unpolarised light at a smooth dielectric boundary: the mean
 // of the s- and p-polarised reflectances,
-//   r_s = (eta cos_i - cos_t) / (eta cos_i + cos_t),  r_p = (cos_i - eta cos_t) / (cos_i + eta cos_t).
+//   r_s = (eta cos_i - cos_t) / (eta cos_i + cos_t),  r_p = (cos_i - eta cos_t) / (cos_i + eta
+//   cos_t).
 // ((1 - eta) / (1 + eta))^2 at normal incidence; r_p = 0 at Brewster's angle, tan = 1 / eta;
 // 1 under total internal reflection.
 inline real fresnel_reflectance(real cos_incident, real eta) {

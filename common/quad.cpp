@@ -43,8 +43,8 @@ bool quad::hit(const ray& r, interval ray_t, hit_record& rec) const {
     rec.p_error = spawn_offset_scale * (max_abs_component(rec.p) + std::fabs(D));
     rec.set_face_normal(r, normal);
     rec.mat    = mat.get();
-    rec.object = this;                    // [ch08]
-    rec.local  = vec3(alpha, beta, 0);    // [ch08]
+    rec.object = this;                  // [ch08]
+    rec.local  = vec3(alpha, beta, 0);  // [ch08]
     return true;
 }
 

@@ -1,5 +1,5 @@
 // PCG32 (O'Neill 2014): a small, fast generator with 2^63 independent streams and O(log n)
-// jump-ahead, so every pixel sample can own its own reproducible stream. Chapter 02.
+// jump-ahead, so every pixel sample can own its own reproducible stream. Chapter 01.
 // state' = state * 6364136223846793005 + inc;  output = rotr32(xorshifted, state >> 59).
 #pragma once
 

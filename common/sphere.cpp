@@ -11,9 +11,8 @@ namespace rt {
 namespace {
 
 // The rarer half of hit_sphere(), kept out of line so the common miss stays a short function.
-[[gnu::noinline]] bool record_hit(const point3& center, real radius, const ray& r,
-                                  interval ray_t, hit_record& rec, real a, real b, real c,
-                                  real a2_discriminant) {
+[[gnu::noinline]] bool record_hit(const point3& center, real radius, const ray& r, interval ray_t,
+                                  hit_record& rec, real a, real b, real c, real a2_discriminant) {
     // Stable roots: q never cancels, since b and sign(b) sqrt(...) add with the same sign.
     // sqrt(b^2 - a c) = sqrt(a * discriminant) = sqrt(a2_discriminant / a).
     real q     = -(b + std::copysign(std::sqrt(a2_discriminant / a), b));
@@ -42,8 +41,7 @@ namespace {
 
 }  // namespace
 
-bool hit_sphere(const point3& center, real radius, const ray& r, interval ray_t,
-                hit_record& rec) {
+bool hit_sphere(const point3& center, real radius, const ray& r, interval ray_t, hit_record& rec) {
     // With f = A - C: a t^2 + 2 b t + c = 0, a = b.b, b = f.b, c = f.f - r^2.
     const vec3& d = r.direction();
     vec3 f        = r.origin() - center;
@@ -80,8 +78,8 @@ sphere::sphere(const point3& center, real radius, std::shared_ptr<material> m)
 
 bool sphere::hit(const ray& r, interval ray_t, hit_record& rec) const {
     if (!hit_sphere(center_, radius_, r, ray_t, rec)) return false;
-    rec.mat    = mat.get();
-    rec.object = this;  // [ch08]
+    rec.mat    = mat.get();  // [ch03]
+    rec.object = this;       // [ch08]
     return true;
 }
 

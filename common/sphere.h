@@ -12,8 +12,7 @@ namespace rt {
 // The nearest hit of r with the sphere (center, radius) inside ray_t: fills rec's t, p, p_error,
 // normal and front_face (the caller adds the material) and returns true, or returns false and
 // leaves rec unchanged. Shared by every sphere, moving or not.
-bool hit_sphere(const point3& center, real radius, const ray& r, interval ray_t,
-                hit_record& rec);
+bool hit_sphere(const point3& center, real radius, const ray& r, interval ray_t, hit_record& rec);
 
 class sphere : public hittable {
   public:
@@ -30,7 +29,7 @@ class sphere : public hittable {
 
     const point3& center() const { return center_; }
     real radius() const { return radius_; }
-    const std::shared_ptr<material>& surface() const { return mat; }
+    const std::shared_ptr<material>& surface() const { return mat; }  // [ch03]
 
     // [ch08 begin]
     surface_uv uv_at(const vec3& local) const override { return uv_from_normal(local); }
@@ -46,7 +45,7 @@ class sphere : public hittable {
   private:
     point3 center_;
     real radius_;
-    std::shared_ptr<material> mat;
+    std::shared_ptr<material> mat;  // [ch03]
 };
 
 }  // namespace rt

@@ -1,5 +1,7 @@
 #include "texture.h"
 
+#include <limits>
+
 #include "validate.h"
 
 namespace rt {
@@ -8,6 +10,9 @@ checker_texture::checker_texture(real scale, std::shared_ptr<texture> even_textu
                                  std::shared_ptr<texture> odd_texture)
     : cell_size(scale), even(std::move(even_texture)), odd(std::move(odd_texture)) {
     require_positive(scale, "checker scale");
+    // A subnormal scale would send every cell index x / scale to infinity, out of the range of
+    // the integer cast in value().
+    require(scale >= std::numeric_limits<real>::min(), "checker scale", "not be subnormal", scale);
     require_given(even, "checker even texture");
     require_given(odd, "checker odd texture");
 }

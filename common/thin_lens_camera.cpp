@@ -42,6 +42,8 @@ ray thin_lens_camera::get_ray(int i, int j, sampler& s) const {
         real instant = shutter_open + s.next_1d() * (shutter_close - shutter_open);
         return ray(origin, target - origin, instant);
     }
+    // A shutter open for one instant (open == close) draws nothing, but its rays are at it.
+    if (shutter_open > 0) return ray(origin, target - origin, shutter_open);
     // [ch07 end]
     return ray(origin, target - origin);
 }

@@ -16,7 +16,7 @@ class thin_lens_camera : public camera {
     point3 lookat   = point3(0, 0, -1);  // The point it looks at
     vec3 vup        = vec3(0, 1, 0);     // Which way is up in the scene
     real aperture   = 0;                 // Lens diameter in scene units; 0 is a pinhole
-    real focus_dist = 0;  // Distance to the sharp plane; 0 means |lookfrom - lookat|
+    real focus_dist = 0;                 // Distance to the sharp plane; 0 means |lookfrom - lookat|
     // [ch07 begin]
     real shutter_open  = 0;  // Rays get an instant uniform in [open, close) within [0, 1],
     real shutter_close = 0;  // where motion is defined; open == close: one instant, no sample

@@ -2,6 +2,8 @@
 // guard of the hard cases, and temporary files. Every random helper makes each draw in a statement
 // of its own (the order in which function arguments are evaluated is unspecified), so that every
 // compiler draws the same numbers in the same order; a test's seed then fixes all of its cases.
+// Chapter 01, like every file directly in tests/: it includes chapter-01 headers only, so that
+// every chapter's tests can use it. Helpers that need materials are in ch03/material_helpers.h.
 #pragma once
 
 #include <unistd.h>
@@ -9,21 +11,20 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <limits>
-#include <memory>
 #include <string>
 #include <system_error>
 #include <vector>
 
 #include "common/image.h"
-#include "common/material.h"
-#include "common/normal_shading.h"
 #include "common/rng.h"
-#include "common/sampling.h"
+#include "common/sampler.h"
+#include "common/scalar.h"
 #include "common/vec3.h"
 
 namespace rt_test {
@@ -38,10 +39,16 @@ inline rt::real log_uniform(rt::pcg32& rng, rt::real lo_exponent, rt::real hi_ex
     return std::pow(rt::real(10), uniform(rng, lo_exponent, hi_exponent));
 }
 
-// A unit vector uniform on the sphere: two draws, the first one for u.
+// A unit vector uniform on the sphere: two draws, the first one for u. Archimedes' map, z = 1 - 2u
+// and the azimuth 2 pi v: the same operations as chapter 03's sample_uniform_sphere (so the same
+// vectors), written out here so that chapter 02's tests can use it.
 inline rt::vec3 random_unit(rt::pcg32& rng) {
-    rt::real u = rng.uniform();
-    return rt::sample_uniform_sphere({u, rng.uniform()});
+    rt::real u   = rng.uniform();
+    rt::real v   = rng.uniform();
+    rt::real z   = 1 - 2 * u;
+    rt::real r   = std::sqrt(std::max(rt::real(0), 1 - z * z));
+    rt::real phi = 2 * rt::pi * v;
+    return rt::vec3(r * std::cos(phi), r * std::sin(phi), z);
 }
 
 // A point uniform in the cube [-half_side, half_side]^3: three draws, x, then y, then z.
@@ -73,9 +80,13 @@ inline bool exactly(const rt::vec3& a, const rt::vec3& b) {
     return a.x() == b.x() && a.y() == b.y() && a.z() == b.z();
 }
 
-// A fresh material for a shape whose material the test never looks at.
-inline std::shared_ptr<rt::material> any_material() {
-    return std::make_shared<rt::normal_shading>();
+// The number a sampler started at pixel sample (px, py, k) returns after `draws` numbers: what a
+// part that draws exactly `draws` dimensions leaves for the next part (sampler.h's layout).
+inline rt::real next_after_draws(std::uint64_t seed, int px, int py, int k, int draws) {
+    rt::sampler s(seed);
+    s.start_pixel_sample(px, py, k);
+    for (int i = 0; i < draws; ++i) s.next_1d();
+    return s.next_1d();
 }
 
 // True (with a warning that says so) in a float build, whose 24 bits the hard cases outrun.

@@ -4,9 +4,9 @@
 // surface (hit_record::spawn_ray), so there is no shadow acne; the PNG is sRGB-encoded.
 #include <memory>
 
-#include "common/lambertian.h"
 #include "common/command_line.h"
 #include "common/hittable_list.h"
+#include "common/lambertian.h"
 #include "common/path_tracer.h"
 #include "common/quad.h"
 #include "common/sphere.h"

@@ -3,10 +3,10 @@
 // A fuzzed ray that ends up below the surface is absorbed.
 #include <memory>
 
-#include "common/lambertian.h"
-#include "common/metal.h"
 #include "common/command_line.h"
 #include "common/hittable_list.h"
+#include "common/lambertian.h"
+#include "common/metal.h"
 #include "common/path_tracer.h"
 #include "common/sphere.h"
 

@@ -6,7 +6,6 @@
 #pragma once
 
 #include <memory>
-
 #include <vector>
 
 #include "common/dielectric.h"
@@ -25,7 +24,7 @@ inline std::vector<std::shared_ptr<rt::sphere>> random_spheres() {
     };
 
     std::vector<std::shared_ptr<rt::sphere>> world;
-    auto add    = [&](point3 center, double radius, std::shared_ptr<rt::material> mat) {
+    auto add = [&](point3 center, double radius, std::shared_ptr<rt::material> mat) {
         world.push_back(std::make_shared<rt::sphere>(center, radius, std::move(mat)));
     };
     add(point3(0, -1000, 0), 1000, std::make_shared<rt::lambertian>(color(0.5, 0.5, 0.5)));

@@ -22,7 +22,8 @@ rt::scene bouncing_spheres(bool use_bvh) {
     rt::pcg32 bounce(/*sequence=*/7, /*seed=*/2024);
     std::vector<rt::bounded_object> spheres;
     for (auto& s : random_spheres()) {
-        bool small_and_matte = s->radius() < 1 && std::dynamic_pointer_cast<rt::lambertian>(s->surface());
+        bool small_and_matte =
+            s->radius() < 1 && std::dynamic_pointer_cast<rt::lambertian>(s->surface());
         if (!small_and_matte) {
             spheres.emplace_back(s);
             continue;

@@ -17,17 +17,16 @@
 // Book 2's two Perlin spheres: a marble ground and a marble sphere sharing one texture.
 rt::scene perlin_spheres(const std::string& texture_file, bool with_globe) {
     using rt::point3;
-    auto marble =
-        std::make_shared<rt::textured_lambertian>(std::make_shared<rt::noise_texture>(4));
-    auto world = std::make_shared<rt::hittable_list>();
+    auto marble = std::make_shared<rt::textured_lambertian>(std::make_shared<rt::noise_texture>(4));
+    auto world  = std::make_shared<rt::hittable_list>();
     world->add(std::make_shared<rt::sphere>(point3(0, -1000, 0), 1000, marble));
     if (!with_globe) {
         world->add(std::make_shared<rt::sphere>(point3(0, 2, 0), 2, marble));
     } else {  // the seed report's last figure: the image texture beside the noise
         auto earth = std::make_shared<rt::image_texture>(texture_file);
         world->add(std::make_shared<rt::sphere>(point3(0, 2, 2.2), 2, marble));
-        world->add(std::make_shared<rt::sphere>(
-            point3(0, 2, -2.2), 2, std::make_shared<rt::textured_lambertian>(earth)));
+        world->add(std::make_shared<rt::sphere>(point3(0, 2, -2.2), 2,
+                                                std::make_shared<rt::textured_lambertian>(earth)));
     }
     auto cam      = std::make_shared<rt::thin_lens_camera>();
     cam->vfov     = with_globe ? 30 : 20;
@@ -50,7 +49,6 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"marble", "globe"}))
         ->capture_default_str();
     cli.app().add_option("--texture", texture_file, "Image for the globe")->capture_default_str();
-    return cli.run(argc, argv, [&] {
-        return rt::path_trace(perlin_spheres(texture_file, which == "globe"));
-    });
+    return cli.run(argc, argv,
+                   [&] { return rt::path_trace(perlin_spheres(texture_file, which == "globe")); });
 }

@@ -17,9 +17,8 @@
 // Book 2's simple light: two marble spheres lit by a spherical and a rectangular light.
 rt::scene simple_light() {
     using rt::point3, rt::vec3;
-    auto marble =
-        std::make_shared<rt::textured_lambertian>(std::make_shared<rt::noise_texture>(4));
-    auto light = std::make_shared<rt::diffuse_light>(rt::color(4, 4, 4));
+    auto marble = std::make_shared<rt::textured_lambertian>(std::make_shared<rt::noise_texture>(4));
+    auto light  = std::make_shared<rt::diffuse_light>(rt::color(4, 4, 4));
 
     auto world = std::make_shared<rt::hittable_list>();
     world->add(std::make_shared<rt::sphere>(point3(0, -1000, 0), 1000, marble));

@@ -33,7 +33,7 @@ inline rt::scene book2_final_scene(const std::string& globe_texture) {
     for (int i = 0; i < 20; ++i) {
         for (int j = 0; j < 20; ++j) {
             double x0 = -1000.0 + i * 100.0, z0 = -1000.0 + j * 100.0;
-            double y1 = 1 + 100 * rng.uniform();
+            double y1  = 1 + 100 * rng.uniform();
             auto faces = rt::box_faces(point3(x0, 0, z0), point3(x0 + 100, y1, z0 + 100), ground);
             objects.insert(objects.end(), faces.begin(), faces.end());
         }
@@ -59,15 +59,15 @@ inline rt::scene book2_final_scene(const std::string& globe_texture) {
     objects.push_back(std::make_shared<rt::constant_medium>(glass_ball, 0.2, color(0.2, 0.4, 0.9)));
 
     // A thin mist over everything: a medium inside a sphere of radius 5000 (no surface).
-    auto mist_boundary = std::make_shared<rt::sphere>(point3(0, 0, 0), 5000,
-                                                      std::make_shared<rt::dielectric>(1.5));
+    auto mist_boundary =
+        std::make_shared<rt::sphere>(point3(0, 0, 0), 5000, std::make_shared<rt::dielectric>(1.5));
     objects.push_back(std::make_shared<rt::constant_medium>(mist_boundary, 0.0001, color(1, 1, 1)));
 
     // The globe and a marble sphere.
-    objects.push_back(std::make_shared<rt::sphere>(
-        point3(400, 200, 400), 100,
-        std::make_shared<rt::textured_lambertian>(
-            std::make_shared<rt::image_texture>(globe_texture))));
+    objects.push_back(
+        std::make_shared<rt::sphere>(point3(400, 200, 400), 100,
+                                     std::make_shared<rt::textured_lambertian>(
+                                         std::make_shared<rt::image_texture>(globe_texture))));
     objects.push_back(std::make_shared<rt::sphere>(
         point3(220, 280, 300), 80,
         std::make_shared<rt::textured_lambertian>(std::make_shared<rt::noise_texture>(0.1))));

@@ -9,7 +9,7 @@ cd "$work" || exit 1
 printf 'keep' >"existing.$ext"
 # Ignore SIGXFSZ so that write() fails with EFBIG instead of killing the process; 8 KiB is far
 # less than a 400x225 image.
-(trap '' XFSZ; ulimit -f 8; exec "$exe" --quiet --width 400 --spp 1 --out "existing.$ext") 2>err.txt
+(trap '' XFSZ; ulimit -f 8; exec "$exe" --quiet --width 1600 --spp 1 --out "existing.$ext") 2>err.txt
 rc=$?
 problems=""
 [ "$rc" -eq 2 ] || problems+=" exit code $rc, not 2;"

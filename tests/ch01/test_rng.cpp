@@ -1,5 +1,5 @@
 // pcg32 and the sampler (common/rng.h, common/sampler.h): reproducible streams, jump-ahead, and a
-// stream per pixel sample that does not depend on what was drawn before. Chapter 02.
+// stream per pixel sample that does not depend on what was drawn before. Chapter 01.
 #include <catch2/catch.hpp>
 #include <cstdint>
 #include <set>
@@ -42,7 +42,7 @@ bool same_outputs(pcg32 a, pcg32 b, int count) {
 
 }  // namespace
 
-TEST_CASE("rng: pcg32 reproduces the reference generator", "[rng][ch02]") {
+TEST_CASE("rng: pcg32 reproduces the reference generator", "[rng][ch01]") {
     // O'Neill's pcg32-demo, pcg32_srandom_r(&rng, 42, 54): initstate 42, sequence 54.
     pcg32 rng(54, 42);
     for (std::uint32_t expected :
@@ -54,7 +54,7 @@ TEST_CASE("rng: pcg32 reproduces the reference generator", "[rng][ch02]") {
     CHECK(same_outputs(pcg32(), pcg32(), 1000));
 }
 
-TEST_CASE("rng: advance(n) equals n calls of next_u32", "[rng][ch02]") {
+TEST_CASE("rng: advance(n) equals n calls of next_u32", "[rng][ch01]") {
     for (std::uint64_t n :
          {0ull, 1ull, 2ull, 3ull, 7ull, 64ull, 1000ull, 65536ull, 3 * 65536ull + 5, 1ull << 22}) {
         CAPTURE(n);
@@ -65,7 +65,7 @@ TEST_CASE("rng: advance(n) equals n calls of next_u32", "[rng][ch02]") {
     }
 }
 
-TEST_CASE("rng: advance composes and the period is 2^64", "[rng][ch02]") {
+TEST_CASE("rng: advance composes and the period is 2^64", "[rng][ch01]") {
     // Jumps too long to step through are checked by algebra: a jump of a then b is one of a + b,
     // and 2^64 steps (the LCG's full period) come back to the start.
     const std::uint64_t a = (1ull << 40) + 123, b = (1ull << 50) + 7;
@@ -87,7 +87,7 @@ TEST_CASE("rng: advance composes and the period is 2^64", "[rng][ch02]") {
     CHECK(same_outputs(halves, pcg32(9, 1), 8));
 }
 
-TEST_CASE("rng: different sequences and seeds give different streams", "[rng][ch02]") {
+TEST_CASE("rng: different sequences and seeds give different streams", "[rng][ch01]") {
     // Two unrelated streams agree at one position with probability 2^-32: over 1000 positions
     // a single coincidence is already unlikely (2.3e-7), so allow at most one.
     auto coincidences = [](pcg32 x, pcg32 y) {
@@ -105,7 +105,7 @@ TEST_CASE("rng: different sequences and seeds give different streams", "[rng][ch
 }
 
 TEST_CASE("rng: uniform() stays at or above 0 and below 1, even for the largest output",
-          "[rng][ch02]") {
+          "[rng][ch01]") {
     // Build the state whose output is 0xffffffff: the output is bits 27..58 of s ^ (s >> 18),
     // rotated by s >> 59, so with bits 41..58 set and the rest clear every output bit is 1.
     const std::uint64_t all_ones_state = 0x07fffe0000000000ULL;
@@ -136,7 +136,7 @@ TEST_CASE("rng: uniform() stays at or above 0 and below 1, even for the largest 
     CHECK(biggest > real(1 - 1e-4));
 }
 
-TEST_CASE("rng: uniform() passes a chi-square test over 100 bins", "[rng][ch02]") {
+TEST_CASE("rng: uniform() passes a chi-square test over 100 bins", "[rng][ch01]") {
     constexpr int bins = 100, samples = 1000000;
     std::vector<double> observed(bins, 0), expected(bins, double(samples) / bins);
     pcg32 rng(2024, 1);
@@ -157,7 +157,7 @@ std::vector<real> draw(rt::sampler& s, int px, int py, int sample_index, int cou
 
 }  // namespace
 
-TEST_CASE("sampler: the same pixel sample and seed give the same numbers", "[sampler][ch02]") {
+TEST_CASE("sampler: the same pixel sample and seed give the same numbers", "[sampler][ch01]") {
     rt::sampler a(7), b(7);
     CHECK(draw(a, 3, 4, 5, 16) == draw(b, 3, 4, 5, 16));
     // next_2d is next_1d twice, u first.
@@ -169,7 +169,7 @@ TEST_CASE("sampler: the same pixel sample and seed give the same numbers", "[sam
 }
 
 TEST_CASE("sampler: a pixel sample's stream does not depend on what was drawn before",
-          "[sampler][ch02]") {
+          "[sampler][ch01]") {
     // This is what makes the image independent of the thread schedule and of cropping.
     rt::sampler fresh(42);
     const std::vector<real> reference = draw(fresh, 10, 20, 3, 32);
@@ -185,7 +185,7 @@ TEST_CASE("sampler: a pixel sample's stream does not depend on what was drawn be
     CHECK(draw(used, 10, 20, 3, 32) == reference);
 }
 
-TEST_CASE("sampler: sample k + 1 starts where sample k's 65536 dimensions end", "[sampler][ch02]") {
+TEST_CASE("sampler: sample k + 1 starts where sample k's 65536 dimensions end", "[sampler][ch01]") {
     rt::sampler s(5);
     const std::vector<real> first = draw(s, 1, 2, 0, int(rt::sampler::dimensions_per_sample) + 8);
     const std::vector<real> next  = draw(s, 1, 2, 1, 8);
@@ -193,7 +193,7 @@ TEST_CASE("sampler: sample k + 1 starts where sample k's 65536 dimensions end", 
 }
 
 TEST_CASE("sampler: different pixels, samples and seeds give different numbers",
-          "[sampler][ch02]") {
+          "[sampler][ch01]") {
     // The first two numbers of 8192 streams: two unrelated pairs coincide with probability 2^-64
     // (2^-48 with float's 24-bit uniforms), and there are 2^25 pairs of streams, so a repeat has
     // probability below 2^-23 unless two of them are the same stream by mistake.
@@ -217,7 +217,7 @@ TEST_CASE("sampler: different pixels, samples and seeds give different numbers",
     CHECK(draw(s, 3, 5, 0, 4) != draw(s, 5, 3, 0, 4));
 }
 
-TEST_CASE("sampler: first numbers are uniform across pixels and across seeds", "[sampler][ch02]") {
+TEST_CASE("sampler: first numbers are uniform across pixels and across seeds", "[sampler][ch01]") {
     // Neighbouring pixels and consecutive seeds must not give correlated starts, or an image
     // would show the pixel grid in its noise. 65536 first draws into 64 bins: 1024 expected each.
     constexpr int bins = 64, streams = 256 * 256;

@@ -1,7 +1,7 @@
 // Tests for lambertian.h (chapter 03): the ideal diffuse reflector scatters into the hemisphere of
-// the normal with density cos(theta) / pi, weighted by exactly its albedo, and refuses albedos
-// that would create energy. The sampler's own distribution is tested by chi-square in
-// test_sampling; here we test what the material does with it.
+// the normal with density cos(theta) / pi, weighted by exactly its albedo, draws 2 sampler
+// dimensions, and refuses albedos that would create energy. The sampler's own distribution is
+// tested by chi-square in test_sampling; here we test what the material does with it.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
@@ -10,11 +10,10 @@
 #include <string>
 #include <utility>
 
+#include "ch03/material_helpers.h"
 #include "common/error.h"
 #include "common/lambertian.h"
 #include "common/rng.h"
-#include "common/sampling.h"
-#include "common/texture.h"
 #include "statistics.h"
 #include "test_helpers.h"
 
@@ -22,18 +21,7 @@ namespace {
 
 using rt::color, rt::point3, rt::real, rt::vec3;
 
-using rt_test::exactly, rt_test::random_unit;
-
-// A hit at p with normal n (facing the incoming ray), as a shape would report it.
-rt::hit_record hit_at(const point3& p, const vec3& n, bool front_face) {
-    rt::hit_record rec;
-    rec.p          = p;
-    rec.normal     = n;
-    rec.front_face = front_face;
-    rec.t          = 1;
-    rec.p_error    = 64 * std::numeric_limits<real>::epsilon() * (1 + rt::max_abs_component(p));
-    return rec;
-}
+using rt_test::exactly, rt_test::hit_at, rt_test::random_unit;
 
 }  // namespace
 
@@ -47,25 +35,23 @@ TEST_CASE("lambertian: scattered directions lie in the hemisphere of the normal"
 
     int sample = 0;
     for (const vec3& n : normals) {
-        int below = 0, wrong_origin = 0, wrong_time = 0;
+        int below = 0, wrong_origin = 0;
         for (int k = 0; k < 5000; ++k, ++sample) {
             auto rec = hit_at(point3(1, 2, 3), n, k % 2 == 0);
-            rt::ray r_in(point3(0, 0, 0), -n, 0.25);
+            rt::ray r_in(point3(0, 0, 0), -n);
             s.start_pixel_sample(sample, 0, 0);
             color attenuation;
             rt::ray scattered;
             REQUIRE(mat.scatter(r_in, rec, s, attenuation, scattered));
             // The density cos/pi vanishes at the horizon, so every sample is strictly above it.
             if (!(dot(scattered.direction(), n) > 0)) ++below;
-            // Spawned on the normal's side, by hit_record::spawn_ray.
+            // Spawned on the normal's side, by hit_record::spawn_reflected_ray.
             if (!exactly(scattered.origin(), rec.p + rec.p_error * n)) ++wrong_origin;
-            if (scattered.time() != real(0.25)) ++wrong_time;
         }
         INFO("normal " << n << ": " << below << " of 5000 below the horizon, " << wrong_origin
-                       << " not spawned off the surface, " << wrong_time << " with a new time");
+                       << " not spawned off the surface");
         CHECK(below == 0);
         CHECK(wrong_origin == 0);
-        CHECK(wrong_time == 0);
     }
 }
 
@@ -130,47 +116,29 @@ TEST_CASE("lambertian: an albedo outside 0..1 throws a user_error naming it", "[
     CHECK_NOTHROW(rt::lambertian(color(1, 1, 1)));
 }
 
-TEST_CASE("lambertian: with a texture, the attenuation is the texture's value at (u, v, p)",
-          "[ch08]") {
-    // A texture that depends on all of u, v and p, with values in [0, 1], so that any mix-up
-    // (u for v, a stale p, the normal for p) changes the color.
-    class uvp_texture : public rt::texture {
-      public:
-        color value(real u, real v, const point3& p) const override {
-            return color(u, v, real(0.5) + real(0.5) * std::sin(p.x() + 2 * p.y() + 3 * p.z()));
-        }
-    };
-    auto texture = std::make_shared<uvp_texture>();
-    rt::lambertian mat(texture);
-    rt::pcg32 rng(5, 6);
-    rt::sampler s(13);
-    int wrong = 0;
+TEST_CASE("lambertian: scatter draws exactly 2 sampler dimensions, as scatter_diffuse does",
+          "[ch03]") {
+    // The material's part of the sampler's layout (sampler.h): what the next bounce draws must
+    // be the dimension after these 2. And the direction is scatter_diffuse's, bit for bit.
+    rt::lambertian mat(color(real(0.3), real(0.6), real(0.9)));
+    rt::pcg32 rng(8, 1);
+    int drew_wrong = 0, differ = 0;
     for (int k = 0; k < 1000; ++k) {
-        real x = rng.uniform(), y = rng.uniform();
-        const point3 p(10 * x - 5, 10 * y - 5, 10 * rng.uniform() - 5);
         const vec3 n = random_unit(rng);
-        auto rec     = hit_at(p, n, k % 2 == 0);
-        rec.u        = rng.uniform();
-        rec.v        = rng.uniform();
-        s.start_pixel_sample(k, 3, 0);
+        auto rec     = hit_at(point3(-1, 0, 2), n, true);
+        const rt::ray r_in(point3(-1, 0, 2) + n, -n);
+        rt::sampler s(21), copy(21);
+        s.start_pixel_sample(k, 0, 0);
+        copy.start_pixel_sample(k, 0, 0);
         color attenuation;
         rt::ray scattered;
-        REQUIRE(mat.scatter(rt::ray(p + n, -n, 0.5), rec, s, attenuation, scattered));
-        if (!exactly(attenuation, texture->value(rec.u, rec.v, rec.p))) ++wrong;
+        REQUIRE(mat.scatter(r_in, rec, s, attenuation, scattered));
+        const rt::ray diffuse = rt::scatter_diffuse(r_in, rec, copy);
+        if (s.next_1d() != rt_test::next_after_draws(21, k, 0, 0, 2)) ++drew_wrong;
+        if (!exactly(scattered.origin(), diffuse.origin()) ||
+            !exactly(scattered.direction(), diffuse.direction()))
+            ++differ;
     }
-    CHECK(wrong == 0);
-
-    // A checkerboard: the two cells give the two colors.
-    rt::lambertian checkered(std::make_shared<rt::checker_texture>(1, color(0.875, 0.875, 0.875),
-                                                                   color(0.25, 0.375, 0.125)));
-    for (const auto& [p, want] : {std::pair(point3(0.5, 0.5, 0.5), color(0.875, 0.875, 0.875)),
-                                  std::pair(point3(1.5, 0.5, 0.5), color(0.25, 0.375, 0.125))}) {
-        color attenuation;
-        rt::ray scattered;
-        s.start_pixel_sample(0, 4, 0);
-        REQUIRE(checkered.scatter(rt::ray(p + vec3(0, 0, 1), vec3(0, 0, -1)),
-                                  hit_at(p, vec3(0, 0, 1), true), s, attenuation, scattered));
-        CHECK(exactly(attenuation, want));
-    }
-    CHECK_THROWS_AS(rt::lambertian(std::shared_ptr<rt::texture>()), rt::user_error);
+    CHECK(drew_wrong == 0);
+    CHECK(differ == 0);
 }

@@ -1,4 +1,5 @@
-// ray (common/ray.h): P(t) = A + t b, and the instant the ray travels at. Chapter 01.
+// ray (common/ray.h): P(t) = A + t b, and continued(), the next segment of the same path.
+// Chapter 01. (The instant a ray carries, and that continued() keeps it, is chapter 07's.)
 #include <catch2/catch.hpp>
 
 #include "common/ray.h"
@@ -27,16 +28,21 @@ TEST_CASE("ray: at(t) walks along the direction from the origin", "[ray][ch01]")
     CHECK(equal(r.origin(), point3(1, 2, 3)));
 }
 
-TEST_CASE("ray: the time is carried and defaults to zero", "[ray][ch01]") {
-    const rt::ray still(point3(0, 0, 0), vec3(0, 0, -1));
-    CHECK(still.time() == 0);
-    const rt::ray moving(point3(0, 0, 0), vec3(0, 0, -1), real(0.25));
-    CHECK(moving.time() == real(0.25));
-    // at() does not depend on the time: motion belongs to the objects, not the ray.
-    CHECK(equal(moving.at(2), still.at(2)));
-
+TEST_CASE("ray: a default ray starts at the origin with a zero direction", "[ray][ch01]") {
     const rt::ray none;
     CHECK(equal(none.origin(), point3(0, 0, 0)));
     CHECK(equal(none.direction(), vec3(0, 0, 0)));
-    CHECK(none.time() == 0);
+}
+
+TEST_CASE("ray: continued() gives a new origin and direction and leaves the ray alone",
+          "[ray][ch01]") {
+    const rt::ray first(point3(1, 2, 3), vec3(4, 5, 6));
+    const rt::ray next = first.continued(point3(-1, real(0.5), 7), vec3(0, -2, real(0.25)));
+    // Both are taken as given, bit for bit: not normalized, not offset.
+    CHECK(equal(next.origin(), point3(-1, real(0.5), 7)));
+    CHECK(equal(next.direction(), vec3(0, -2, real(0.25))));
+    CHECK(equal(next.at(2), point3(-1, real(-3.5), real(7.5))));
+    // The ray it continues is a value, unchanged.
+    CHECK(equal(first.origin(), point3(1, 2, 3)));
+    CHECK(equal(first.direction(), vec3(4, 5, 6)));
 }

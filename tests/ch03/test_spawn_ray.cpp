@@ -17,10 +17,9 @@
 #include <sstream>
 #include <string>
 
-#include "common/lambertian.h"
+#include "ch03/material_helpers.h"
 #include "common/quad.h"
 #include "common/rng.h"
-#include "common/sampling.h"
 #include "common/sphere.h"
 #include "test_helpers.h"
 
@@ -62,7 +61,7 @@ TEST_CASE(
     "never re-hit it near t = 0",
     "[hardcase][ch03]") {
     if (needs_double()) return;
-    auto mat = std::make_shared<rt::lambertian>(rt::color(0.5, 0.5, 0.5));
+    auto mat = rt_test::any_material();
     rt::pcg32 rng(20240601, 1);
     const int n_cases = 100000;
 
@@ -84,9 +83,10 @@ TEST_CASE(
         real away      = radius * log_uniform(rng, -2, 2);
         point3 origin  = aim + away * random_in_hemisphere(rng, n, real(0.05));
         vec3 direction = log_uniform(rng, -3, 3) * (aim - origin);
+        const rt::ray incoming(origin, direction);
         rt::hit_record rec;
         ++primary.cases;
-        if (!s.hit(rt::ray(origin, direction), forward, rec) || !rec.front_face) {
+        if (!s.hit(incoming, forward, rec) || !rec.front_face) {
             primary.fail("radius " + std::to_string(radius));
             continue;
         }
@@ -104,7 +104,7 @@ TEST_CASE(
         // Out: convex, so never again.
         vec3 out = scale * random_in_hemisphere(rng, rec.normal);
         ++outward.cases;
-        if (s.hit(rec.spawn_ray(out, 0), forward, again))
+        if (s.hit(rec.spawn_ray(incoming, out), forward, again))
             outward.fail(where() + ": re-hit at t " + std::to_string(again.t));
 
         // In: only the far side, at the chord's length 2 r cos(theta). Its error budget is the
@@ -119,7 +119,7 @@ TEST_CASE(
         real chord     = 2 * radius * cos_theta;
         real tolerance = real(1e-9) * chord + 3 * rec.p_error / cos_theta;
         ++inward.cases;
-        if (!s.hit(rec.spawn_ray(in, 0), forward, again)) {
+        if (!s.hit(rec.spawn_ray(incoming, in), forward, again)) {
             inward.fail(where() + ": went in and never came out");
         } else {
             real travelled = again.t * in.length();
@@ -145,12 +145,12 @@ TEST_CASE(
         vec3 along = scale * random_tangent(rng, rec.normal);
         if (dot(along, rec.normal) > 0) {
             ++tangent_out.cases;
-            if (s.hit(rec.spawn_ray(along, 0), forward, again))
+            if (s.hit(rec.spawn_ray(incoming, along), forward, again))
                 tangent_out.fail(where() + ": tangent ray re-hit");
         } else {
             ++tangent_in.cases;
             real half_chord = std::sqrt(2 * radius * rec.p_error);
-            if (!s.hit(rec.spawn_ray(along, 0), forward, again)) {
+            if (!s.hit(rec.spawn_ray(incoming, along), forward, again)) {
                 tangent_in.fail(where() + ": tangent ray went in and never came out");
             } else {
                 real ratio = again.t * along.length() / half_chord;
@@ -185,7 +185,7 @@ TEST_CASE(
     "never re-hit it",
     "[hardcase][ch03]") {
     if (needs_double()) return;
-    auto mat = std::make_shared<rt::lambertian>(rt::color(0.5, 0.5, 0.5));
+    auto mat = rt_test::any_material();
     rt::pcg32 rng(20240602, 2);
     const int n_cases = 100000;
 
@@ -210,9 +210,10 @@ TEST_CASE(
         point3 aim    = corner + a * u + b * v;
         vec3 from     = random_in_hemisphere(rng, rng.uniform() < 0.5 ? n : -n, real(0.05));
         point3 origin = aim + size * log_uniform(rng, -2, 2) * from;
+        const rt::ray incoming(origin, log_uniform(rng, -3, 3) * (aim - origin));
         rt::hit_record rec;
         ++primary.cases;
-        if (!q.hit(rt::ray(origin, log_uniform(rng, -3, 3) * (aim - origin)), forward, rec)) {
+        if (!q.hit(incoming, forward, rec)) {
             primary.fail("size " + std::to_string(size));
             continue;
         }
@@ -228,13 +229,15 @@ TEST_CASE(
         rt::hit_record again;
 
         ++same_side.cases;
-        if (q.hit(rec.spawn_ray(scale * random_in_hemisphere(rng, rec.normal), 0), forward, again))
+        if (q.hit(rec.spawn_ray(incoming, scale * random_in_hemisphere(rng, rec.normal)), forward,
+                  again))
             same_side.fail(where() + ": re-hit at t " + std::to_string(again.t));
         ++through.cases;
-        if (q.hit(rec.spawn_ray(scale * random_in_hemisphere(rng, -rec.normal), 0), forward, again))
+        if (q.hit(rec.spawn_ray(incoming, scale * random_in_hemisphere(rng, -rec.normal)), forward,
+                  again))
             through.fail(where() + ": re-hit at t " + std::to_string(again.t));
         ++along_plane.cases;
-        if (q.hit(rec.spawn_ray(scale * random_tangent(rng, rec.normal), 0), forward, again))
+        if (q.hit(rec.spawn_ray(incoming, scale * random_tangent(rng, rec.normal)), forward, again))
             along_plane.fail(where() + ": re-hit at t " + std::to_string(again.t));
     }
 
@@ -246,4 +249,31 @@ TEST_CASE(
     CHECK(same_side.failures == 0);
     CHECK(through.failures == 0);
     CHECK(along_plane.failures == 0);
+}
+
+TEST_CASE("spawn_ray: the origin moves p_error along the normal, to the side the ray leaves by",
+          "[ch03]") {
+    // The rule itself, on a hand-made record: p = (1, 2, 3), normal +z, p_error 1/64 (exact).
+    rt::hit_record rec;
+    rec.p       = point3(1, 2, 3);
+    rec.normal  = vec3(0, 0, 1);
+    rec.p_error = real(1) / 64;
+    const rt::ray incoming(point3(1, 2, 10), vec3(0, 0, -1));
+    const point3 above(1, 2, 3 + real(1) / 64), below(1, 2, 3 - real(1) / 64);
+
+    const rt::ray out = rec.spawn_ray(incoming, vec3(1, 0, 1));
+    CHECK(rt_test::exactly(out.origin(), above));
+    CHECK(rt_test::exactly(out.direction(), vec3(1, 0, 1)));  // as given, not normalized
+    const rt::ray in = rec.spawn_ray(incoming, vec3(0, -1, -3));
+    CHECK(rt_test::exactly(in.origin(), below));
+    CHECK(rt_test::exactly(in.direction(), vec3(0, -1, -3)));
+    // Exactly in the tangent plane the ray is taken to go in: it may only leave by reflecting.
+    CHECK(rt_test::exactly(rec.spawn_ray(incoming, vec3(1, 1, 0)).origin(), below));
+
+    // spawn_reflected_ray trusts the caller: on the normal's side even when the direction says
+    // otherwise by a rounding error (a reflection that grazes the surface).
+    CHECK(rt_test::exactly(rec.spawn_reflected_ray(incoming, vec3(1, 0, 0)).origin(), above));
+    CHECK(rt_test::exactly(rec.spawn_reflected_ray(incoming, vec3(1, 0, real(-1e-17))).origin(),
+                           above));
+    CHECK(rt_test::exactly(rec.spawn_reflected_ray(incoming, vec3(1, 0, 1)).origin(), above));
 }

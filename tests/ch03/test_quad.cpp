@@ -1,15 +1,15 @@
 // Tests for quad.h (chapter 03): hits inside, on the closed edges and corners, misses just
-// outside and parallel, the face normal, and the zero-area checks. The quads have power-of-two
-// edges and the rays dyadic coordinates, so every plane coordinate (a, b) is computed exactly
-// and a point on an edge really is on it.
+// outside and parallel, the face normal, the material, and the zero-area checks. The quads have
+// power-of-two edges and the rays dyadic coordinates, so every plane coordinate (a, b) is computed
+// exactly and a point on an edge really is on it.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
 #include <memory>
 #include <utility>
 
+#include "ch03/material_helpers.h"
 #include "common/error.h"
-#include "common/normal_shading.h"
 #include "common/quad.h"
 #include "test_helpers.h"
 
@@ -21,7 +21,7 @@ constexpr real eps = std::numeric_limits<real>::epsilon();
 const rt::interval forward(0, rt::infinity);
 
 rt::quad make_quad(const point3& Q, const vec3& u, const vec3& v) {
-    return rt::quad(Q, u, v, std::make_shared<rt::normal_shading>());
+    return rt::quad(Q, u, v, rt_test::any_material());
 }
 
 using rt_test::exactly;
@@ -43,14 +43,15 @@ rt::ray down_onto(real a, real b) {
 }  // namespace
 
 TEST_CASE("quad: a ray through its inside hits with the front normal unit(u x v)", "[ch03]") {
-    auto q = make_quad(corner, edge_u, edge_v);
+    auto mat = rt_test::any_material();
+    rt::quad q(corner, edge_u, edge_v, mat);
     rt::hit_record rec;
     REQUIRE(q.hit(down_onto(0.25, 0.5), forward, rec));
     CHECK(rec.t == 5);
     CHECK(exactly(rec.p, at(0.25, 0.5)));
     CHECK(rec.front_face);
     CHECK(exactly(rec.normal, vec3(0, 0, 1)));
-    CHECK(rec.mat != nullptr);
+    CHECK(rec.mat == mat.get());  // the quad's own material
     // interval::surrounds is open: t = 5 itself is outside (0, 5).
     CHECK_FALSE(q.hit(down_onto(0.25, 0.5), rt::interval(0, 5), rec));
 }
@@ -104,6 +105,7 @@ TEST_CASE("quad: a hit from behind has front_face false and the normal facing th
     CHECK(rec.t == 2);
     CHECK_FALSE(rec.front_face);
     CHECK(exactly(rec.normal, vec3(0, 0, -1)));
+    CHECK(rec.mat != nullptr);  // the material, from the back as well
 }
 
 TEST_CASE("quad: a tilted quad reports the normal unit(u x v) and a hit point on its plane",
@@ -133,74 +135,23 @@ TEST_CASE("quad: a tilted quad reports the normal unit(u x v) and a hit point on
 }
 
 TEST_CASE("quad: zero area (u = 0, v = 0, or u parallel to v) throws a user_error", "[ch03]") {
-    auto mat = std::make_shared<rt::normal_shading>();
+    auto mat = rt_test::any_material();
     CHECK_THROWS_AS(rt::quad(corner, vec3(0, 0, 0), edge_v, mat), rt::user_error);
     CHECK_THROWS_AS(rt::quad(corner, edge_u, vec3(0, 0, 0), mat), rt::user_error);
     CHECK_THROWS_AS(rt::quad(corner, vec3(1, 2, 3), vec3(2, 4, 6), mat), rt::user_error);
     CHECK_THROWS_AS(rt::quad(corner, vec3(1, 2, 3), vec3(-0.5, -1, -1.5), mat), rt::user_error);
+    // The message says what is wrong and names both edges (validate.h's form).
     CHECK_THROWS_WITH(rt::quad(corner, vec3(1, 2, 3), vec3(2, 4, 6), mat),
-                      Catch::Contains("zero area"));
-    CHECK_THROWS_AS(rt::quad(corner, edge_u, edge_v, nullptr), rt::user_error);
+                      Catch::Contains("quad edges must span an area") &&
+                          Catch::Contains("got u = (1, 2, 3), v = (2, 4, 6)"));
+    CHECK_THROWS_WITH(rt::quad(corner, edge_u, edge_v, nullptr),
+                      Catch::Contains("quad material is missing"));
     CHECK_NOTHROW(rt::quad(corner, edge_u, edge_v, mat));
 }
 
-TEST_CASE("quad: the bounding box is the box of the four corners, padded where flat", "[ch07]") {
-    // The floor quad in z = 3: x in [1, 3], y in [-2, 2], and z padded to 1e-4 around 3 (so
-    // the slab test can hit it from any side; see test_aabb).
-    const rt::aabb box = make_quad(corner, edge_u, edge_v).bounding_box();
-    CHECK(box.x.min == 1);
-    CHECK(box.x.max == 3);
-    CHECK(box.y.min == -2);
-    CHECK(box.y.max == 2);
-    CHECK(box.z.min < 3);
-    CHECK(box.z.max > 3);
-    CHECK(box.z.size() >= real(1e-4) - 8 * eps);  // the minimum, up to rounding around 3
-    CHECK(box.z.size() < real(2e-4));
-
-    // A tilted quad whose corners are extreme on different axes: Q, Q+u, Q+v, Q+u+v each hold
-    // some bound, so a box of Q and Q+u+v alone would miss some. u = (1, 2, -0.5),
-    // v = (-0.5, 0.25, 1.5) from Q = (-3, 1.5, 2): corners (-3, 1.5, 2), (-2, 3.5, 1.5),
-    // (-3.5, 1.75, 3.5), (-2.5, 3.75, 3); all exact.
-    const rt::aabb tilted =
-        make_quad(point3(-3, 1.5, 2), vec3(1, 2, -0.5), vec3(-0.5, 0.25, 1.5)).bounding_box();
-    CHECK(tilted.x.min == -3.5);
-    CHECK(tilted.x.max == -2);
-    CHECK(tilted.y.min == 1.5);
-    CHECK(tilted.y.max == 3.75);
-    CHECK(tilted.z.min == 1.5);
-    CHECK(tilted.z.max == 3.5);
-}
-
-TEST_CASE("quad: a hit's (u, v) are its plane coordinates (a, b): 0 and 1 at the corners",
-          "[ch08]") {
-    auto q = make_quad(corner, edge_u, edge_v);
-    // Dyadic points: a and b are computed exactly.
-    const real points[][2] = {{0, 0}, {1, 0}, {0, 1}, {1, 1}, {0.25, 0.5}, {0.75, 0.125}};
-    for (const auto& ab : points) {
-        INFO("a = " << ab[0] << ", b = " << ab[1]);
-        rt::hit_record rec;
-        REQUIRE(q.hit(down_onto(ab[0], ab[1]), forward, rec));
-        CHECK(rec.u == ab[0]);
-        CHECK(rec.v == ab[1]);
-        // From behind, the same point has the same coordinates: (u, v) belong to the surface.
-        REQUIRE(q.hit(rt::ray(at(ab[0], ab[1]) - vec3(0, 0, 5), vec3(0, 0, 1)), forward, rec));
-        CHECK(rec.u == ab[0]);
-        CHECK(rec.v == ab[1]);
-    }
-
-    // A tilted quad: Q + a u + b v is hit at (a, b) up to rounding. The error of a is that of
-    // the hit point (a few ulps of the coordinates, ~4) divided by the edge length (~1), 64 ulps
-    // allowed.
-    const point3 Q(-3, 1.5, 2);
-    const vec3 u(1, 2, -0.5), v(-0.5, 0.25, 1.5);
-    auto tilted  = make_quad(Q, u, v);
-    const vec3 n = rt::unit_vector(cross(u, v));
-    for (const auto& ab : {std::pair<real, real>(0.3, 0.6), {0.01, 0.99}, {0.5, 0.5}}) {
-        const point3 target = Q + ab.first * u + ab.second * v;
-        const point3 origin = target + 3 * n + vec3(0.125, -0.25, 0.375);
-        rt::hit_record rec;
-        REQUIRE(tilted.hit(rt::ray(origin, target - origin), forward, rec));
-        CHECK(rec.u == Approx(ab.first).margin(64 * eps * 4));
-        CHECK(rec.v == Approx(ab.second).margin(64 * eps * 4));
-    }
+TEST_CASE("quad: corner() and the edges are the ones it was made with", "[ch03]") {
+    const rt::quad q = make_quad(corner, edge_u, edge_v);
+    CHECK(exactly(q.corner(), corner));
+    CHECK(exactly(q.edge_u(), edge_u));
+    CHECK(exactly(q.edge_v(), edge_v));
 }

@@ -1,22 +1,24 @@
 // background (common/background.h): what a ray that hits nothing sees, a vertical blend from
-// bottom (straight down) to top (straight up). Chapter 01.
+// bottom (straight down) to top (straight up), and sky_only, chapter 01's whole renderer.
+// Chapter 01.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
 
 #include "common/background.h"
 #include "common/rng.h"
-#include "common/sampling.h"
+#include "common/sampler.h"
+#include "test_helpers.h"
 
 using rt::color;
+using rt::point3;
 using rt::real;
 using rt::vec3;
 
 namespace {
 
-bool equal(const color& a, const color& b) {
-    return a.x() == b.x() && a.y() == b.y() && a.z() == b.z();
-}
+// Bit-for-bit equality of colors (rt_test::exactly), under the name the checks read best with.
+bool (&equal)(const vec3&, const vec3&) = rt_test::exactly;
 
 }  // namespace
 
@@ -65,12 +67,37 @@ TEST_CASE("background: uniform() is the same in every direction", "[background][
     rt::pcg32 rng(8, 8);
     int differ = 0;
     for (int i = 0; i < 10000; ++i) {
-        const real u = rng.uniform();
-        const vec3 d = real(1 + 10 * rng.uniform()) * rt::sample_uniform_sphere({u, rng.uniform()});
+        const real length = 1 + 10 * rng.uniform();
+        const vec3 d      = length * rt_test::random_unit(rng);
         if (!equal(uniform.radiance(d), c)) {
             UNSCOPED_INFO("direction " << d << " gives " << uniform.radiance(d));
             ++differ;
         }
     }
     CHECK(differ == 0);
+}
+
+TEST_CASE("background: sky_only sees the background along every ray and draws nothing",
+          "[background][ch01]") {
+    const rt::background sky{color(real(0.2), real(0.4), real(0.6)), color(1, real(0.5), 0)};
+    const rt::sky_only estimator(sky);
+    rt::pcg32 rng(3, 9);
+    int differ = 0, drew = 0;
+    for (int k = 0; k < 1000; ++k) {
+        const point3 origin = rt_test::random_in_cube(rng, 100);
+        const real length   = 1 + 10 * rng.uniform();
+        const vec3 d        = length * rt_test::random_unit(rng);
+        rt::sampler s(5);
+        s.start_pixel_sample(k, 0, 0);
+        // Only the direction matters (nothing to hit), whatever the origin and the depth.
+        const color L = estimator.radiance(rt::ray(origin, d), s, 1 + k % 3);
+        if (!equal(L, sky.radiance(d))) {
+            UNSCOPED_INFO("direction " << d << " gives " << L << ", the sky " << sky.radiance(d));
+            ++differ;
+        }
+        // The next number is the sampler's first: the estimator drew none.
+        if (s.next_1d() != rt_test::next_after_draws(5, k, 0, 0, 0)) ++drew;
+    }
+    CHECK(differ == 0);
+    CHECK(drew == 0);
 }

@@ -1,5 +1,5 @@
 // The statistical helpers themselves (tests/statistics.h): the tests of every sampler lean on them,
-// so they are checked against known values first. Chapter 02 is the first to use them (the RNG).
+// so they are checked against known values first. Chapter 01, whose RNG is the first to use them.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
@@ -25,7 +25,7 @@ bool close_relative(double got, double want, double tolerance) {
 
 }  // namespace
 
-TEST_CASE("statistics: Q(a, x) matches closed forms and reference values", "[statistics][ch02]") {
+TEST_CASE("statistics: Q(a, x) matches closed forms and reference values", "[statistics][ch01]") {
     // Q(1, x) = e^-x and Q(1/2, x) = erfc(sqrt(x)) exercise both branches (x < a+1 and x >= a+1).
     for (double x : {0.01, 0.5, 1.9, 2.1, 7.0, 40.0}) {
         INFO("x = " << x);
@@ -53,7 +53,7 @@ TEST_CASE("statistics: Q(a, x) matches closed forms and reference values", "[sta
     CHECK_THROWS_AS(regularized_gamma_q(1, -1), std::invalid_argument);
 }
 
-TEST_CASE("statistics: chi-square p-values match the textbook table", "[statistics][ch02]") {
+TEST_CASE("statistics: chi-square p-values match the textbook table", "[statistics][ch01]") {
     // A table gives critical values to 3-5 digits; 3.84 is the rounded 5% point of 1 dof (its
     // exact p-value is 0.050044), so 1e-3 absolute is the precision the table itself has.
     CHECK(std::fabs(chi_square_p_value(3.84, 1) - 0.05) < 1e-3);
@@ -66,7 +66,7 @@ TEST_CASE("statistics: chi-square p-values match the textbook table", "[statisti
     CHECK_THROWS_AS(chi_square_p_value(1, 0), std::invalid_argument);
 }
 
-TEST_CASE("statistics: a fair uniform histogram passes, a biased one fails", "[statistics][ch02]") {
+TEST_CASE("statistics: a fair uniform histogram passes, a biased one fails", "[statistics][ch01]") {
     constexpr int bins    = 50;
     constexpr int samples = 100000;
     const std::vector<double> expected(bins, double(samples) / bins);
@@ -97,7 +97,7 @@ TEST_CASE("statistics: a fair uniform histogram passes, a biased one fails", "[s
 }
 
 TEST_CASE("statistics: chi-square pools low-count bins and rejects impossible samples",
-          "[statistics][ch02]") {
+          "[statistics][ch01]") {
     // Sorted by expectation: 1, 1, 1, 2 pool into one bin of 5, leaving {pool, 100, 100}: 2 dof.
     const std::vector<double> expected = {100, 1, 100, 1, 2, 1};
     const std::vector<double> observed = {100, 0, 99, 2, 3, 1};
@@ -117,7 +117,7 @@ TEST_CASE("statistics: chi-square pools low-count bins and rejects impossible sa
     CHECK_THROWS_AS(chi_square_test({1, 2}, {3}, 0.01), std::invalid_argument);
 }
 
-TEST_CASE("statistics: mean within k standard errors", "[statistics][ch02]") {
+TEST_CASE("statistics: mean within k standard errors", "[statistics][ch01]") {
     // {1, 2, 3, 4}: mean 2.5, sample variance 5/3, standard error sqrt(5/12) = 0.6455.
     const std::vector<double> samples = {1, 2, 3, 4};
     auto estimate                     = rt_test::estimate_mean(samples);
