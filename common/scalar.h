@@ -15,8 +15,9 @@ using real = double;
 inline constexpr real infinity = std::numeric_limits<real>::infinity();
 inline constexpr real pi       = real(3.14159265358979323846);
 
-inline constexpr real degrees_to_radians(real degrees) {
-    return degrees * pi / real(180);
+// In double, rounded to real once: angles come from scenes as double literals (0.3 degrees).
+inline constexpr real degrees_to_radians(double degrees) {
+    return static_cast<real>(degrees * 3.14159265358979323846 / 180);
 }
 
 }  // namespace rt

@@ -1,5 +1,7 @@
 #include "thin_lens_camera.h"
 
+#include <sstream>
+
 #include "sampling.h"
 #include "validate.h"
 
@@ -11,8 +13,11 @@ void thin_lens_camera::initialize(const film& f) {
     require_non_negative(focus_dist, "camera focus distance");
     // [ch07 begin]
     // Moving objects are bounded (and defined) for times in [0, 1] only.
-    require(0 <= shutter_open && shutter_open <= shutter_close && shutter_close <= 1,
-            "camera shutter", "satisfy 0 <= open <= close <= 1", shutter_open);
+    if (!(0 <= shutter_open && shutter_open <= shutter_close && shutter_close <= 1)) {
+        std::ostringstream shutter;
+        shutter << "open " << shutter_open << ", close " << shutter_close;
+        require(false, "camera shutter", "satisfy 0 <= open <= close <= 1", shutter.str());
+    }
     // [ch07 end]
 
     vec3 view = lookfrom - lookat;

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <ostream>
+#include <type_traits>
 
 #include "scalar.h"
 
@@ -14,7 +15,12 @@ class vec3 {
     real e[3];
 
     constexpr vec3() : e{0, 0, 0} {}
-    constexpr vec3(real x, real y, real z) : e{x, y, z} {}
+    // From any three numbers: scenes are written with double literals and ints (0.1 is a
+    // double), and the float build rounds them to real here, once and on purpose.
+    template <typename X, typename Y, typename Z>
+    requires std::is_arithmetic_v<X> && std::is_arithmetic_v<Y> && std::is_arithmetic_v<Z>
+    constexpr vec3(X x, Y y, Z z)
+        : e{static_cast<real>(x), static_cast<real>(y), static_cast<real>(z)} {}
 
     constexpr real x() const { return e[0]; }
     constexpr real y() const { return e[1]; }

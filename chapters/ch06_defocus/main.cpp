@@ -15,7 +15,7 @@
 #include "random_spheres.h"
 
 // The glass scene from above and to the side (the seed report's defocus camera).
-rt::scene glass_scene_through_lens(std::optional<double> aperture, std::optional<double> focus) {
+rt::scene glass_scene_through_lens(std::optional<rt::real> aperture, std::optional<rt::real> focus) {
     auto cam        = std::make_shared<rt::thin_lens_camera>();
     cam->vfov       = 20;
     cam->lookfrom   = rt::point3(3, 3, 2);
@@ -32,7 +32,7 @@ rt::scene glass_scene_through_lens(std::optional<double> aperture, std::optional
 
 // Book 1's final scene; the book's defocus angle 0.6 degrees at focus distance 10 is a lens of
 // diameter 2 * 10 * tan(0.3 degrees).
-rt::scene final_scene(std::optional<double> aperture, std::optional<double> focus) {
+rt::scene final_scene(std::optional<rt::real> aperture, std::optional<rt::real> focus) {
     auto cam        = std::make_shared<rt::thin_lens_camera>();
     cam->vfov       = 20;
     cam->lookfrom   = rt::point3(13, 2, 3);
@@ -53,7 +53,7 @@ rt::scene final_scene(std::optional<double> aperture, std::optional<double> focu
 
 int main(int argc, char** argv) {
     rt::command_line cli("ch06_defocus");
-    std::optional<double> aperture, focus;
+    std::optional<rt::real> aperture, focus;
     std::string which = "glass";
     cli.app()
         .add_option("--aperture", aperture, "Lens diameter (default 2.0; final: 0.105)")

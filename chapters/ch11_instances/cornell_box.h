@@ -19,7 +19,7 @@
 struct cornell_light {
     rt::point3 Q;
     rt::vec3 u, v;
-    double radiance;
+    rt::real radiance;
 };
 
 // A box of the given size turned about y by `degrees`, then moved by `offset`: the way book 2

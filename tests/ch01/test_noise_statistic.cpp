@@ -77,3 +77,26 @@ TEST_CASE("noise statistic: a pixel that missed a rare path is not a failure", "
     // Without the reference's variance (same sample count claimed) the block would fail.
     CHECK_FALSE(rt_test::compare_within_noise(test, test_var, ref, ref_var, 1).passed());
 }
+
+TEST_CASE("noise statistic: where there is no noise, rounding passes and a real bias fails",
+          "[ch01]") {
+    // A noiseless image (like chapter 02's normals): zero variance everywhere.
+    rt::image ref(32, 32), zero(32, 32), last_bits(32, 32), biased(32, 32);
+    for (int y = 0; y < 32; ++y) {
+        for (int x = 0; x < 32; ++x) {
+            const float value = 0.999995f;
+            ref.set(x, y, rt::color(value, value, value));
+            // A few float ulps off, as a render in float rounds: not a bias.
+            const float off = std::nextafter(std::nextafter(value, 2.0f), 2.0f);
+            last_bits.set(x, y, rt::color(off, value, off));
+            // One part in 10^4 off: a real, if small, bias.
+            biased.set(x, y, rt::color(value, value * 0.9999f, value));
+        }
+    }
+    CHECK(rt_test::compare_within_noise(last_bits, zero, ref, zero, 256).failed == 0);
+    CHECK(rt_test::compare_within_noise(biased, zero, ref, zero, 256).failed == 4);
+    // Black and noiseless must agree exactly.
+    rt::image dark(32, 32);
+    dark.set(3, 3, rt::color(0, 1e-30, 0));
+    CHECK(rt_test::compare_within_noise(dark, zero, zero, zero, 256).failed == 1);
+}

@@ -86,7 +86,7 @@ TEST_CASE("metal: scatter draws exactly 3 sampler dimensions, even as a perfect 
 TEST_CASE("metal: bad parameters are refused with the value named", "[ch04]") {
     using Catch::Matchers::Contains;
     const real nan = std::numeric_limits<real>::quiet_NaN();
-    CHECK_THROWS_WITH(rt::metal(color(0.5, 0.5, 0.5), -0.1),
+    CHECK_THROWS_WITH(rt::metal(color(0.5, 0.5, 0.5), rt::real(-0.1)),
                       Contains("metal fuzz") && Contains("-0.1"));
     CHECK_THROWS_WITH(rt::metal(color(0.5, 0.5, 0.5), 1.5),
                       Contains("metal fuzz") && Contains("1.5"));

@@ -143,6 +143,6 @@ TEST_CASE("dielectric: a bad index of refraction is refused with the value named
     CHECK_THROWS_WITH(rt::dielectric(-1.5), Contains("index of refraction") && Contains("-1.5"));
     CHECK_THROWS_AS(rt::dielectric(nan), rt::user_error);
     CHECK_THROWS_AS(rt::dielectric(rt::infinity, rt::fresnel_model::exact), rt::user_error);
-    CHECK_NOTHROW(rt::dielectric(1.0 / 1.5));  // an air bubble in glass is legal
+    CHECK_NOTHROW(rt::dielectric(rt::real(1.0 / 1.5)));  // an air bubble in glass is legal
     CHECK_NOTHROW(rt::dielectric(real(2.4), rt::fresnel_model::exact));
 }

@@ -74,6 +74,7 @@ TEST_CASE("image_texture: u = 0 is the left column, v = 1 the top row, nearest t
     const rt::image_texture t(dir.file("quad.png"));
     CHECK(t.width() == 2);
     CHECK(t.height() == 2);
+    CHECK(t.uses_uv());  // so a hit computes its (u, v) for it
     // The texel centers, and points just inside each quarter.
     CHECK(close(at(t, 0.25, 0.75), top_left));
     CHECK(close(at(t, 0.75, 0.75), top_right));

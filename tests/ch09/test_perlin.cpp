@@ -25,7 +25,6 @@
 
 #include "common/perlin.h"
 #include "common/rng.h"
-#include "common/sampling.h"
 #include "test_helpers.h"
 
 namespace {

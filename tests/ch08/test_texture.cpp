@@ -2,6 +2,8 @@
 // is the 3D lattice of cubes of side `scale` coloured by the parity of
 // floor(x / s) + floor(y / s) + floor(z / s). Cells are half-open, [k s, (k + 1) s): a point
 // exactly on a boundary belongs to the cell on its positive side (and -0 counts as 0).
+// value_at() asks the hit for its (u, v) only when the texture reads them: a texture that does
+// not gets value(0, 0, p), and the shape's uv_at() is never called.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
@@ -9,7 +11,9 @@
 #include <sstream>
 #include <string>
 
+#include "ch03/material_helpers.h"
 #include "common/error.h"
+#include "common/sphere.h"
 #include "common/texture.h"
 #include "test_helpers.h"
 
@@ -17,7 +21,7 @@ namespace {
 
 using rt::color, rt::point3, rt::real, rt::vec3;
 
-using rt_test::exactly;
+using rt_test::any_material, rt_test::exactly;
 
 const color white(1, 1, 1), black(0, 0, 0);
 
@@ -34,6 +38,37 @@ class echo_texture : public rt::texture {
     color value(real u, real v, const point3& p) const override {
         return color(u, v, p.x() + p.y() + p.z());
     }
+    bool uses_uv() const override { return true; }
+};
+
+// A texture that records every call, and says it reads (u, v) or not, as told.
+class recording_texture : public rt::texture {
+  public:
+    explicit recording_texture(bool reads_uv) : reads(reads_uv) {}
+    color value(real u, real v, const point3& p) const override {
+        ++calls;
+        last_u = u;
+        last_v = v;
+        last_p = p;
+        return color(0.25, 0.5, 0.75);
+    }
+    bool uses_uv() const override { return reads; }
+
+    bool reads;
+    mutable int calls   = 0;
+    mutable real last_u = -1, last_v = -1;
+    mutable point3 last_p;
+};
+
+// A sphere that counts how often its surface coordinates are computed.
+class counting_sphere : public rt::sphere {
+  public:
+    using rt::sphere::sphere;
+    rt::surface_uv uv_at(const vec3& local) const override {
+        ++uv_calls;
+        return rt::sphere::uv_at(local);
+    }
+    mutable int uv_calls = 0;
 };
 
 }  // namespace
@@ -124,11 +159,13 @@ TEST_CASE("texture: the checker hands u, v and p unchanged to its two textures",
     CHECK(exactly(flipped.value(0.125, 0.875, q), color(0.125, 0.875, 1.875)));
 }
 
-TEST_CASE("texture: a checker scale that is not positive and finite throws a user_error",
+TEST_CASE("texture: a checker scale that is not positive, finite and normal throws a user_error",
           "[ch08]") {
-    const real nan = std::numeric_limits<real>::quiet_NaN();
+    // A subnormal scale is positive and finite, but every x / scale overflows to infinity.
+    const real nan       = std::numeric_limits<real>::quiet_NaN();
+    const real subnormal = std::numeric_limits<real>::denorm_min();
     for (real scale : {real(0), -real(0), real(-1), real(-0.25), nan, rt::infinity, -rt::infinity,
-                       std::numeric_limits<real>::denorm_min()}) {
+                       subnormal, std::numeric_limits<real>::min() / 2}) {
         std::ostringstream printed;
         printed << scale;
         INFO("scale = " << printed.str());
@@ -138,12 +175,71 @@ TEST_CASE("texture: a checker scale that is not positive and finite throws a use
         } catch (const rt::user_error& e) {
             message = e.what();
         }
-        CHECK_THAT(message, Catch::Contains("checker scale") && Catch::Contains(printed.str()));
+        const bool tiny = scale > 0 && scale < std::numeric_limits<real>::min();
+        CHECK_THAT(message, Catch::Contains(std::string("checker scale must ") +
+                                            (tiny ? "not be subnormal" : "be positive and finite") +
+                                            ", got " + printed.str()));
     }
+    CHECK_NOTHROW(rt::checker_texture(std::numeric_limits<real>::min(), white, black));
     CHECK_NOTHROW(rt::checker_texture(real(1e-3), white, black));
     CHECK_NOTHROW(rt::checker_texture(real(1e6), white, black));
     CHECK_THROWS_AS(rt::checker_texture(1, nullptr, std::make_shared<rt::solid_color>(black)),
                     rt::user_error);
     CHECK_THROWS_AS(rt::checker_texture(1, std::make_shared<rt::solid_color>(white), nullptr),
                     rt::user_error);
+}
+
+TEST_CASE(
+    "texture: solid colors and checkers of them read no (u, v), but a checker with one that "
+    "does reads them",
+    "[ch08]") {
+    auto solid = std::make_shared<rt::solid_color>(white);
+    auto echo  = std::make_shared<echo_texture>();
+    CHECK_FALSE(solid->uses_uv());
+    CHECK_FALSE(rt::checker_texture(1, white, black).uses_uv());
+    CHECK(rt::checker_texture(1, echo, solid).uses_uv());
+    CHECK(rt::checker_texture(1, solid, echo).uses_uv());
+}
+
+TEST_CASE("texture: value_at computes the hit's (u, v) only for a texture that reads them",
+          "[ch08]") {
+    // A ray down onto the top of a sphere, off its axis so that (u, v) are not (0, 0).
+    const counting_sphere ball(point3(1, 2, 3), 2, any_material());
+    rt::hit_record rec;
+    REQUIRE(ball.hit(rt::ray(point3(1.5, 10, 3.25), vec3(0, -1, 0)), rt::interval(0, rt::infinity),
+                     rec));
+    REQUIRE(rec.object == &ball);
+    const rt::surface_uv expected = rt::sphere::uv_from_normal(rec.local);
+    REQUIRE(expected.u > 0);
+    REQUIRE(expected.v > 0);
+    REQUIRE(ball.uv_calls == 0);  // the hit itself computes no coordinates
+
+    // A texture that does not read (u, v): value(0, 0, p), and the sphere is never asked.
+    const recording_texture solid_like(false);
+    CHECK(exactly(solid_like.value_at(rec), color(0.25, 0.5, 0.75)));
+    CHECK(solid_like.calls == 1);
+    CHECK(solid_like.last_u == 0);
+    CHECK(solid_like.last_v == 0);
+    CHECK(exactly(solid_like.last_p, rec.p));
+    CHECK(ball.uv_calls == 0);
+    // Nor through a checker of such textures.
+    const rt::checker_texture checker(1, std::make_shared<recording_texture>(false),
+                                      std::make_shared<recording_texture>(false));
+    checker.value_at(rec);
+    CHECK(ball.uv_calls == 0);
+
+    // A texture that reads them: the sphere computes them once, from its local normal.
+    const recording_texture mapped(true);
+    mapped.value_at(rec);
+    CHECK(ball.uv_calls == 1);
+    CHECK(mapped.last_u == expected.u);
+    CHECK(mapped.last_v == expected.v);
+    CHECK(exactly(mapped.last_p, rec.p));
+    // A checker with such a texture on either side asks for them as well.
+    const rt::checker_texture mixed(1, std::make_shared<recording_texture>(false),
+                                    std::make_shared<echo_texture>());
+    // The hit, near (1.5, 3.92, 3.25), lies in cell 1 + 3 + 3: odd, the echo.
+    const color seen = mixed.value_at(rec);
+    CHECK(ball.uv_calls == 2);
+    CHECK(exactly(seen, color(expected.u, expected.v, rec.p.x() + rec.p.y() + rec.p.z())));
 }

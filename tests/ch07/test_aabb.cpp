@@ -9,7 +9,6 @@
 
 #include "common/aabb.h"
 #include "common/rng.h"
-#include "common/sampling.h"
 #include "test_helpers.h"
 
 namespace {

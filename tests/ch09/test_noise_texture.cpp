@@ -36,6 +36,8 @@ TEST_CASE("noise_texture: marble is gray, within 0..1, and follows its formula",
         darkest   = std::min(darkest, c.x());
         brightest = std::max(brightest, c.x());
     }
+    // A solid texture: a hit's (u, v) are never computed for it.
+    CHECK_FALSE(marble.uses_uv());
     CHECK(not_gray == 0);
     CHECK(outside == 0);
     CHECK(not_formula == 0);
