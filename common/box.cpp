@@ -9,7 +9,7 @@
 namespace rt {
 
 std::vector<bounded_object> box_faces(const point3& a, const point3& b,
-                                      std::shared_ptr<material> mat) {
+                                      const std::shared_ptr<material>& mat) {
     point3 lo(std::min(a.x(), b.x()), std::min(a.y(), b.y()), std::min(a.z(), b.z()));
     point3 hi(std::max(a.x(), b.x()), std::max(a.y(), b.y()), std::max(a.z(), b.z()));
     if (!(lo.x() < hi.x() && lo.y() < hi.y() && lo.z() < hi.z())) {
@@ -36,8 +36,8 @@ std::vector<bounded_object> box_faces(const point3& a, const point3& b,
     return sides;
 }
 
-std::shared_ptr<bvh> box(const point3& a, const point3& b, std::shared_ptr<material> mat) {
-    return std::make_shared<bvh>(box_faces(a, b, std::move(mat)));
+std::shared_ptr<bvh> box(const point3& a, const point3& b, const std::shared_ptr<material>& mat) {
+    return std::make_shared<bvh>(box_faces(a, b, mat));
 }
 
 }  // namespace rt

@@ -13,6 +13,7 @@ render_result render(const film& f, const camera& cam, const radiance_estimator&
     render_result result{image(width, height), image(width, height), 0};
     progress_meter progress(height, double(width) * spp, settings.quiet);
 
+    // NOLINTNEXTLINE(clang-analyzer-deadcode.DeadStores): read by the omp pragma below
     const int threads = settings.threads > 0 ? settings.threads : omp_get_num_procs();
     // Dynamic scheduling: rows through glass cost more than rows of sky.
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
