@@ -75,8 +75,14 @@ class aabb {
     // reject a box whose contents the ray does hit (pbrt's 1 + 2 gamma(3)).
     static constexpr real robust_factor = 1 + 4 * std::numeric_limits<real>::epsilon();
 
-    // A flat box (a quad in a coordinate plane) still needs some thickness so the slab test
-    // does not divide a zero width; widen any axis thinner than delta around its middle.
+    // Widens any axis thinner than delta around its middle, as the book does for flat boxes (a
+    // quad in a coordinate plane). The slab test divides by the direction, never by the width,
+    // and the book pads because its test rejects an overlap of zero length (max <= min): the two
+    // slab distances of a flat axis are equal, so without padding no crossing ray would hit a
+    // flat box there.
+    // hit() above needs no padding: it rejects only max < min and widens the far distance, so a
+    // zero-length overlap counts. Without it the Cornell box renders byte for byte the same; we
+    // keep it only so that no box has zero thickness.
     void pad_to_minimums() {
         constexpr real delta = real(1e-4);
         auto pad             = [](interval& i) {

@@ -42,10 +42,10 @@ class solid_color : public texture {
 };
 
 // A 3D checkerboard of cubes of side `scale` filling space (a solid texture: it needs no
-// surface coordinates). We use the book 2 rule on the floors of the coordinates,
-//   n = floor(x / scale) + floor(y / scale) + floor(z / scale),  even n -> even, odd n -> odd,
-// not the seed report's sign of sin(x) sin(y) sin(z): the floors give cubes of exactly `scale`
-// and no flicker where a sine crosses zero on a surface.
+// surface coordinates). The floor rule of book 2:
+//   n = floor(x / scale) + floor(y / scale) + floor(z / scale),  even n -> even, odd n -> odd.
+// Cells are half-open, [k scale, (k + 1) scale), so a point on a cell face belongs to the cell
+// on its positive side: a floor lying in the plane y = 0 still shows the pattern.
 class checker_texture : public texture {
   public:
     checker_texture(real scale, std::shared_ptr<texture> even, std::shared_ptr<texture> odd);
@@ -64,6 +64,33 @@ class checker_texture : public texture {
 
   private:
     real cell_size;
+    std::shared_ptr<texture> even, odd;
+};
+
+// The sign rule of book 1 (v3) and of many student ray tracers, kept to compare with the floor
+// rule: cubes of side `scale` colored by the sign of
+//   s = sin(pi x / scale) sin(pi y / scale) sin(pi z / scale),  s >= 0 -> even, s < 0 -> odd.
+// (scale = pi / 10 gives the book's sin(10 x) sin(10 y) sin(10 z).) Inside the cell
+// [k scale, (k + 1) scale) the sine has the sign (-1)^k, so away from the cell faces both rules
+// give the same pattern. On a face a sine is 0 (or, for k != 0, a rounding error of either
+// sign): a surface lying in a face plane, such as a floor at y = 0, shows one color instead of
+// the pattern. It also costs three sines per lookup where the floor rule needs three floors.
+class sine_checker_texture : public texture {
+  public:
+    sine_checker_texture(real scale, std::shared_ptr<texture> even, std::shared_ptr<texture> odd);
+    sine_checker_texture(real scale, const color& even_color, const color& odd_color)
+        : sine_checker_texture(scale, std::make_shared<solid_color>(even_color),
+                               std::make_shared<solid_color>(odd_color)) {}
+
+    color value(real u, real v, const point3& p) const override {
+        real sines =
+            std::sin(frequency * p.x()) * std::sin(frequency * p.y()) * std::sin(frequency * p.z());
+        return (sines < 0 ? odd : even)->value(u, v, p);
+    }
+    bool uses_uv() const override { return even->uses_uv() || odd->uses_uv(); }
+
+  private:
+    real frequency;  // pi / scale: a half period of each sine is one cell
     std::shared_ptr<texture> even, odd;
 };
 

@@ -1,7 +1,14 @@
 #!/usr/bin/python3
 """Writes report/README.md from report/intro.md, report/figures.txt (captions) and
 report/figures/timings.txt (each figure's settings, time and speed, as tools/render-report
-measured them on this machine)."""
+measured them on this machine).
+
+report/figures.txt has two kinds of lines. A rendered figure, "figure | chapter | arguments |
+caption", is shown under its own heading with its command line and time; one with an empty
+caption is shown only inside the composite figure that uses it. A composite figure,
+"figure | crops | SOURCE... WxH+X+Y ZOOM | caption", is made by tools/render-report from
+figures rendered before it: the sources side by side, and below each the region WxH+X+Y enlarged
+ZOOM times."""
 import os
 import platform
 import re
@@ -16,14 +23,15 @@ SUMMARY = re.compile(
     r"(?P<threads>\d+) threads: (?P<seconds>[\d.]+) s, (?P<rate>[\d.]+) M samples/s")
 
 
-def read_captions():
-    captions = {}
+def read_figures():
+    """The lines of report/figures.txt in order: (figure, chapter, arguments, caption)."""
+    figures = []
     with open(os.path.join(REPORT, "figures.txt")) as f:
         for line in f:
             if line.strip() and not line.startswith("#"):
-                figure, chapter, _extra, caption = [p.strip() for p in line.split("|", 3)]
-                captions[figure] = (chapter, caption)
-    return captions
+                figure, chapter, extra, caption = [p.strip() for p in line.split("|", 3)]
+                figures.append((figure, chapter, extra, caption))
+    return figures
 
 
 def read_timings():
@@ -38,14 +46,37 @@ def read_timings():
     return rows
 
 
+def anchor(figure):
+    """The link target of a figure's heading, as GitHub makes it (a dot is dropped)."""
+    return "#" + re.sub(r"[^a-z0-9_ -]", "", figure.lower()).replace(" ", "-")
+
+
+def crops_parts(extra):
+    """The sources, region and zoom of a composite figure's arguments."""
+    parts = extra.split()
+    size, x, y = re.fullmatch(r"(\d+x\d+)\+(\d+)\+(\d+)", parts[-2]).groups()
+    return parts[:-2], size, x, y, parts[-1]
+
+
+def run_line(chapter, extra, t):
+    """The command line of a rendered figure, with its settings and time."""
+    command = f"build/release/chapters/{chapter}" + (f" {extra}" if extra else "")
+    return (f"`{command}` ({t['size']}, {t['spp']} spp, max depth {t['depth']}, "
+            f"seed {t['seed']}): {t['seconds']} s on {t['threads']} threads, "
+            f"{t['rate']} M samples/s.")
+
+
 def benchmark_section():
     path = os.path.join(REPORT, "figures", "benchmarks.txt")
     if not os.path.exists(path):
         return []
     out = ["", "## Single-thread benchmarks against the book's code", "",
-           "Measured by `tools/benchmark` with `--threads 1`. The book's figures are those its",
-           "own code reaches on one core of this kind of machine (quoted in the issues; its",
-           "`rand()` and scenes differ in detail, so compare orders of magnitude).", "",
+           "Measured by `tools/benchmark` with `--threads 1`. The book's column is the speed of",
+           "the book's own code (*Ray Tracing in One Weekend* series, v4.0.0-alpha.1) on one core",
+           "of this kind of machine, at the book's settings: book 1's final scene at 1200x675,",
+           "10 spp, max depth 20 (487 spheres, no acceleration structure), and book 2's bouncing",
+           "spheres at 400x225, 200 spp, max depth 50 with its BVH; `tools/benchmark` lists both.",
+           "Its `rand()` and scenes differ from ours in detail, so compare orders of magnitude.", "",
            "| benchmark | settings | M samples/s (ours, 1 thread) | book's code | ours / book |",
            "|---|---|---|---|---|"]
     rates = {}
@@ -84,31 +115,64 @@ def machine():
 
 
 def main():
-    captions = read_captions()
-    timings = read_timings()
+    figures = read_figures()
+    timings = {figure: (extra, t) for figure, extra, t in read_timings()}
+    for figure, chapter, _extra, _caption in figures:
+        if chapter != "crops" and figure not in timings:
+            raise SystemExit(f"make_report: {figure} has no timing: run tools/render-report")
+    # Where each rendered figure is shown: under its own heading, or in a composite using it.
+    shown_in = {figure: figure for figure, _chapter, _extra, caption in figures if caption}
+    for figure, chapter, extra, _caption in figures:
+        if chapter == "crops":
+            for source in crops_parts(extra)[0]:
+                shown_in.setdefault(source, figure)
+
     out = [open(os.path.join(REPORT, "intro.md")).read().rstrip(), ""]
     out += ["## Speed of every figure", "",
             f"Measured by `tools/render-report` on {machine()}, Release build, double scalars.",
             "A sample is one camera path.", "",
             "| figure | size | spp | max depth | threads | time (s) | M samples/s |",
             "|---|---|---|---|---|---|---|"]
-    for figure, _extra, t in timings:
-        out.append(f"| [{figure}](#{figure}) | {t['size']} | {t['spp']} | {t['depth']} | "
-                   f"{t['threads']} | {t['seconds']} | {t['rate']} |")
+    for figure, _chapter, _extra, _caption in figures:
+        if figure not in timings:
+            continue
+        t = timings[figure][1]
+        out.append(f"| [{figure}]({anchor(shown_in.get(figure, figure))}) | {t['size']} | "
+                   f"{t['spp']} | "
+                   f"{t['depth']} | {t['threads']} | {t['seconds']} | {t['rate']} |")
     out += benchmark_section()
     out += ["", "## Figures", ""]
-    for figure, extra, t in timings:
-        chapter, caption = captions[figure]
-        command = f"build/release/chapters/{chapter}" + (f" {extra}" if extra else "")
+    for figure, chapter, extra, caption in figures:
+        if chapter == "crops":
+            sources, size, x, y, zoom = crops_parts(extra)
+            out += [f"### {figure}", "", f"![{figure}](figures/{figure}.png)", "", caption, ""]
+            made = ", ".join(f"[{s}]({anchor(s)})" if shown_in.get(s) == s else f"`{s}`"
+                             for s in sources)
+            out += [f"Made by `tools/render-report` with `oiiotool` from {made}: side by side, "
+                    f"and below each the {size} pixels at ({x}, {y}), outlined in red, enlarged "
+                    f"{zoom} times (nearest pixel).", ""]
+            for source in sources:
+                if shown_in.get(source) != source and source in timings:
+                    src_chapter = next(c for f, c, _e, _c in figures if f == source)
+                    src_extra, t = timings[source]
+                    out += [f"`{source}`: " + run_line(src_chapter, src_extra, t), ""]
+            out += [f"Chapter notes: [chapters/{chapter_of(figures, sources[0])}]"
+                    f"(../chapters/{chapter_of(figures, sources[0])}/README.md).", ""]
+            continue
+        if not caption:
+            continue
+        extra, t = timings[figure]
         out += [f"### {figure}", "",
                 f"![{figure}](figures/{figure}.png)", "",
                 caption, "",
-                f"`{command}` ({t['size']}, {t['spp']} spp, max depth {t['depth']}, "
-                f"seed {t['seed']}): {t['seconds']} s on {t['threads']} threads, "
-                f"{t['rate']} M samples/s. Chapter notes: "
+                run_line(chapter, extra, t) + " Chapter notes: "
                 f"[chapters/{chapter}](../chapters/{chapter}/README.md).", ""]
     with open(os.path.join(REPORT, "README.md"), "w") as f:
         f.write("\n".join(out))
+
+
+def chapter_of(figures, figure):
+    return next(c for f, c, _e, _c in figures if f == figure)
 
 
 if __name__ == "__main__":

@@ -14,8 +14,9 @@
 #include "common/thin_lens_camera.h"
 #include "random_spheres.h"
 
-// The glass scene from above and to the side (the seed report's defocus camera).
-rt::scene glass_scene_through_lens(std::optional<rt::real> aperture, std::optional<rt::real> focus) {
+// The glass scene from above and to the side: from (3, 3, 2), looking at the middle sphere.
+rt::scene glass_scene_through_lens(std::optional<rt::real> aperture,
+                                   std::optional<rt::real> focus) {
     auto cam        = std::make_shared<rt::thin_lens_camera>();
     cam->vfov       = 20;
     cam->lookfrom   = rt::point3(3, 3, 2);

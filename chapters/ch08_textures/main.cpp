@@ -2,9 +2,11 @@
 //   u = phi / (2 pi),  phi = atan2(-n.z, n.x) + pi;    v = theta / pi,  theta = acos(-n.y),
 // and an equirectangular image (longitude across, latitude down) is looked up at (u, v): the
 // texel in column u W and row (1 - v) H. The Lambertian albedo is that texel, decoded to linear.
+// --scene checker shows solid textures instead: a solid color and two 3D checkerboards.
 #include <memory>
 #include <string>
 
+#include "checker_scene.h"
 #include "common/command_line.h"
 #include "common/image_texture.h"
 #include "common/path_tracer.h"
@@ -33,8 +35,15 @@ int main(int argc, char** argv) {
     rt::command_line cli("ch08_textures");
     // The project's own equirectangular map, made by tools/make-globe-texture.
     std::string texture_file = RT_ASSET_DIR "/globe.png";
+    std::string which        = "globe";
     cli.app()
         .add_option("--texture", texture_file, "Equirectangular image for the globe")
         ->capture_default_str();
-    return cli.run(argc, argv, [&] { return rt::path_trace(globe(texture_file)); });
+    cli.app()
+        .add_option("--scene", which, "globe (book 2's earth), or checker (solid and checkered)")
+        ->check(CLI::IsMember({"globe", "checker"}))
+        ->capture_default_str();
+    return cli.run(argc, argv, [&] {
+        return rt::path_trace(which == "globe" ? globe(texture_file) : checkered_spheres());
+    });
 }

@@ -22,7 +22,7 @@ rt::scene perlin_spheres(const std::string& texture_file, bool with_globe) {
     world->add(std::make_shared<rt::sphere>(point3(0, -1000, 0), 1000, marble));
     if (!with_globe) {
         world->add(std::make_shared<rt::sphere>(point3(0, 2, 0), 2, marble));
-    } else {  // the seed report's last figure: the image texture beside the noise
+    } else {  // the image texture beside the noise, for comparison
         auto earth = std::make_shared<rt::image_texture>(texture_file);
         world->add(std::make_shared<rt::sphere>(point3(0, 2, 2.2), 2, marble));
         world->add(std::make_shared<rt::sphere>(point3(0, 2, -2.2), 2,

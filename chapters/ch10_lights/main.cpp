@@ -1,7 +1,7 @@
 // Chapter 10: lights. A diffuse_light emits its color (on both faces, as in book 2) and reflects
 // nothing; the path tracer adds emission at every hit, L = Le + attenuation * L(scattered). With
 // a black background all light comes from the emitters. Quads Q + a u + b v make rectangles in
-// any orientation (the seed report's xy, yz and xz rectangles are special cases).
+// any orientation (book 2's first xy, yz and xz rectangles are special cases).
 #include <memory>
 
 #include "common/command_line.h"

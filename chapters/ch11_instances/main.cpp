@@ -2,9 +2,13 @@
 // move each ray the opposite way into the box's own space, hit the box there, and carry the hit
 // point and normal back out. About the y axis by theta:
 //   x' = cos(theta) x + sin(theta) z,   z' = -sin(theta) x + cos(theta) z.
+// --scene rotations turns three boxes in the same room, about x, y and z.
+#include <string>
+
 #include "common/command_line.h"
 #include "common/path_tracer.h"
 #include "cornell_box.h"
+#include "rotations_scene.h"
 
 // Book 2's Cornell box: a tall box turned 15 degrees and a short one turned -18 degrees
 // (placed_box, in cornell_box.h, wraps rt::box in rt::rotate and rt::translate).
@@ -19,7 +23,13 @@ rt::scene cornell_box() {
 }
 
 int main(int argc, char** argv) {
-    return rt::command_line("ch11_instances").run(argc, argv, [] {
-        return rt::path_trace(cornell_box());
+    rt::command_line cli("ch11_instances");
+    std::string which = "cornell";
+    cli.app()
+        .add_option("--scene", which, "cornell (book 2's box), or rotations (about x, y and z)")
+        ->check(CLI::IsMember({"cornell", "rotations"}))
+        ->capture_default_str();
+    return cli.run(argc, argv, [&] {
+        return rt::path_trace(which == "cornell" ? cornell_box() : turned_boxes());
     });
 }

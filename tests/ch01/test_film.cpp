@@ -68,8 +68,7 @@ TEST_CASE("film: a width below 1 or a bad aspect ratio throws a user_error namin
     CHECK_NOTHROW(rt::film::for_aspect(1, 1));
 }
 
-TEST_CASE("film: more than 2^26 pixels is refused before anything is allocated",
-          "[film][ch01]") {
+TEST_CASE("film: more than 2^26 pixels is refused before anything is allocated", "[film][ch01]") {
     // 8192 x 8192 is exactly 2^26 pixels (1.5 GiB for the mean and the variance): allowed.
     CHECK(rt::film::for_aspect(8192, 1).height == 8192);
     CHECK(for_aspect_error(8193, 1) ==

@@ -127,7 +127,8 @@ TEST_CASE("path_tracer: no shadow acne, every path off a Lambertian sphere retur
     // A unit sphere 4 ahead, and a 1e-3 sphere about 1e3 from the origin seen from 0.004 away.
     const furnace scenes[] = {
         furnace(gray_sphere(point3(0, 0, 0), 1), point3(0, 0, 4), 40),
-        furnace(gray_sphere(point3(500, -300, 800), rt::real(1e-3)), point3(500, -300, 800.004), 40),
+        furnace(gray_sphere(point3(500, -300, 800), rt::real(1e-3)), point3(500, -300, 800.004),
+                40),
     };
     for (const auto& sc : scenes) {
         auto c = trace_every_pixel(sc, 2, albedo, color(1, 1, 1));
