@@ -16,6 +16,16 @@
 #include "common/scene.h"
 #include "common/thin_lens_camera.h"
 
+// Where the room stands: each point p of book 2's room goes to scale * p + offset. The book's
+// room is the identity; the scale hard case (tests/ch11/test_scale.cpp) renders the same room at
+// 1e-4 ... 1e4 and far from the origin, and expects the same image.
+struct room_placement {
+    rt::real scale  = 1;
+    rt::vec3 offset = rt::vec3(0, 0, 0);
+    rt::point3 at(const rt::point3& p) const { return scale * p + offset; }
+    rt::vec3 size(const rt::vec3& v) const { return scale * v; }
+};
+
 struct cornell_light {
     rt::point3 Q;
     rt::vec3 u, v;
@@ -25,10 +35,12 @@ struct cornell_light {
 // A box of the given size turned about y by `degrees`, then moved by `offset`: the way book 2
 // places the Cornell boxes (rotate first, about the box's own corner, then translate).
 inline std::shared_ptr<rt::translate> placed_box(rt::vec3 size, double degrees, rt::vec3 offset,
-                                                 std::shared_ptr<rt::material> mat) {
-    auto shape  = rt::box(rt::point3(0, 0, 0), rt::point3(size.x(), size.y(), size.z()), mat);
+                                                 std::shared_ptr<rt::material> mat,
+                                                 const room_placement& room = {}) {
+    rt::vec3 extent = room.size(size);
+    auto shape  = rt::box(rt::point3(0, 0, 0), rt::point3(extent.x(), extent.y(), extent.z()), mat);
     auto turned = std::make_shared<rt::rotate>(shape, rt::axis::y, degrees);
-    return std::make_shared<rt::translate>(turned, offset);
+    return std::make_shared<rt::translate>(turned, room.at(offset));
 }
 
 // The room's walls and light; its white is returned too, for the boxes inside.
@@ -37,7 +49,8 @@ struct cornell_room {
     std::shared_ptr<rt::lambertian> white;
 };
 
-inline cornell_room empty_cornell_room(const cornell_light& light_quad) {
+inline cornell_room empty_cornell_room(const cornell_light& light_quad,
+                                       const room_placement& place = {}) {
     using rt::color, rt::point3, rt::vec3;
     auto red   = std::make_shared<rt::lambertian>(color(0.65, 0.05, 0.05));
     auto green = std::make_shared<rt::lambertian>(color(0.12, 0.45, 0.15));
@@ -45,7 +58,8 @@ inline cornell_room empty_cornell_room(const cornell_light& light_quad) {
     cornell_room room{{}, std::make_shared<rt::lambertian>(color(0.73, 0.73, 0.73))};
 
     auto add_quad = [&](point3 Q, vec3 u, vec3 v, std::shared_ptr<rt::material> m) {
-        room.walls.emplace_back(std::make_shared<rt::quad>(Q, u, v, std::move(m)));
+        room.walls.emplace_back(
+            std::make_shared<rt::quad>(place.at(Q), place.size(u), place.size(v), std::move(m)));
     };
     add_quad(point3(555, 0, 0), vec3(0, 555, 0), vec3(0, 0, 555), green);
     add_quad(point3(0, 0, 0), vec3(0, 555, 0), vec3(0, 0, 555), red);
@@ -58,12 +72,13 @@ inline cornell_room empty_cornell_room(const cornell_light& light_quad) {
 
 // The room with what was put in it, seen by book 2's Cornell camera in the dark. The objects go
 // into a BVH: the same image as a list (tested in chapter 07), faster.
-inline rt::scene cornell_scene(const std::vector<rt::bounded_object>& objects) {
+inline rt::scene cornell_scene(const std::vector<rt::bounded_object>& objects,
+                               const room_placement& place = {}) {
     auto cam          = std::make_shared<rt::thin_lens_camera>();
     cam->aspect_ratio = 1;
     cam->vfov         = 40;
-    cam->lookfrom     = rt::point3(278, 278, -800);
-    cam->lookat       = rt::point3(278, 278, 0);
+    cam->lookfrom     = place.at(rt::point3(278, 278, -800));
+    cam->lookat       = place.at(rt::point3(278, 278, 0));
 
     rt::scene scene;
     scene.world    = std::make_shared<rt::bvh>(objects);
