@@ -9,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "ch01/camera_helpers.h"
 #include "common/camera.h"
 #include "common/error.h"
 #include "common/film.h"
@@ -19,15 +20,14 @@ using rt::point3;
 using rt::real;
 using rt::vec3;
 
-namespace {
+using rt_test::book_film;
+using rt_test::eps;
+using rt_test::initialize_error;
 
-constexpr real eps = std::numeric_limits<real>::epsilon();
+namespace {
 
 // Bit-for-bit equality of vectors (rt_test::exactly), under the name the checks read best with.
 bool (&equal)(const vec3&, const vec3&) = rt_test::exactly;
-
-// The book's film: 400 x 225.
-const rt::film book_film = rt::film::for_aspect(400, 16.0 / 9);
 
 struct traced {
     rt::ray r;
@@ -39,17 +39,6 @@ traced trace(const rt::camera& cam, int i, int j, int sample_index, std::uint64_
     s.start_pixel_sample(i, j, sample_index);
     rt::sampler replay = s;
     return {cam.get_ray(i, j, s), replay.next_2d()};
-}
-
-// The message of the user_error that initialize() throws, or "" (and a failed check) if none.
-std::string initialize_error(rt::camera cam) {
-    try {
-        cam.initialize(book_film);
-    } catch (const rt::user_error& e) {
-        return e.what();
-    }
-    FAIL_CHECK("initialize() accepted invalid settings");
-    return "";
 }
 
 }  // namespace

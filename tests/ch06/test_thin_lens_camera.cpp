@@ -9,6 +9,7 @@
 #include <limits>
 #include <string>
 
+#include "ch01/camera_helpers.h"
 #include "common/camera.h"
 #include "common/error.h"
 #include "common/film.h"
@@ -21,14 +22,14 @@ using rt::point3;
 using rt::real;
 using rt::vec3;
 
-namespace {
+using rt_test::book_film;
+using rt_test::eps;
+using rt_test::initialize_error;
 
-constexpr real eps = std::numeric_limits<real>::epsilon();
+namespace {
 
 // Bit-for-bit equality of vectors (rt_test::exactly), under the name the checks read best with.
 bool (&equal)(const vec3&, const vec3&) = rt_test::exactly;
-
-const rt::film book_film = rt::film::for_aspect(400, 16.0 / 9);
 
 struct traced {
     rt::ray r;
@@ -43,17 +44,6 @@ traced trace(const rt::camera& cam, int i, int j, int sample_index, std::uint64_
     traced t{cam.get_ray(i, j, s), replay.next_2d(), {0, 0}};
     t.lens = replay.next_2d();
     return t;
-}
-
-// The message of the user_error that initialize() throws, or "" (and a failed check) if none.
-std::string initialize_error(rt::thin_lens_camera cam) {
-    try {
-        cam.initialize(book_film);
-    } catch (const rt::user_error& e) {
-        return e.what();
-    }
-    FAIL_CHECK("initialize() accepted invalid settings");
-    return "";
 }
 
 // Where ray r meets the plane through p with unit normal n.

@@ -10,18 +10,21 @@
 #include <limits>
 #include <string>
 
+#include "ch01/camera_helpers.h"
 #include "common/error.h"
 #include "common/film.h"
 #include "common/thin_lens_camera.h"
 #include "test_helpers.h"
+
+using rt_test::book_film;
+using rt_test::eps;
+using rt_test::initialize_error;
 
 namespace {
 
 using rt::point3, rt::real, rt::vec3;
 
 using rt_test::exactly;
-
-const rt::film book_film = rt::film::for_aspect(400, 16.0 / 9);
 
 struct traced {
     rt::ray r;
@@ -40,17 +43,6 @@ traced trace(const rt::thin_lens_camera& cam, int i, int j, int sample_index,
     t.time_u = replay.next_1d();
     t.next   = s.next_1d();
     return t;
-}
-
-// The message of the user_error that initialize() throws, or "" (and a failed check) if none.
-std::string initialize_error(rt::thin_lens_camera cam) {
-    try {
-        cam.initialize(book_film);
-    } catch (const rt::user_error& e) {
-        return e.what();
-    }
-    FAIL_CHECK("initialize() accepted invalid settings");
-    return "";
 }
 
 }  // namespace
