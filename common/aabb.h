@@ -17,9 +17,10 @@ class aabb {
     interval x, y, z;  // empty by default: a box around nothing
 
     aabb() = default;
-    aabb(const interval& ix, const interval& iy, const interval& iz) : x(ix), y(iy), z(iz) {
-        pad_to_minimums();
-    }
+    // Not padded: a flat box (a quad in a coordinate plane) keeps zero thickness, and a point's
+    // box is the point. hit() needs no thickness (see there), and an absolute pad would be too
+    // wide for a scene of size 1e-4 and vanish in the rounding of one at 1e5.
+    aabb(const interval& ix, const interval& iy, const interval& iz) : x(ix), y(iy), z(iz) {}
     // The box with corners a and b, in any order.
     aabb(const point3& a, const point3& b)
         : aabb(interval(std::min(a.x(), b.x()), std::max(a.x(), b.x())),
@@ -33,12 +34,28 @@ class aabb {
 
     const interval& axis_interval(int n) const { return n == 1 ? y : (n == 2 ? z : x); }
 
+    // The box grown by `margin` on every side: room for a bound on the rounding of whatever
+    // computed it (rotate's and translate's boxes, a quad's box: see there).
+    aabb widened(real margin) const {
+        return aabb(interval(x.min - margin, x.max + margin),
+                    interval(y.min - margin, y.max + margin),
+                    interval(z.min - margin, z.max + margin));
+    }
+
+    // The largest |coordinate| of its corners: what the rounding of the box is relative to.
+    real magnitude() const {
+        return std::fmax(std::fmax(std::fmax(std::fabs(x.min), std::fabs(x.max)),
+                                   std::fmax(std::fabs(y.min), std::fabs(y.max))),
+                         std::fmax(std::fabs(z.min), std::fabs(z.max)));
+    }
+
     bool empty() const { return x.min > x.max || y.min > y.max || z.min > z.max; }
     point3 centroid() const {
         return point3((x.min + x.max) / 2, (y.min + y.max) / 2, (z.min + z.max) / 2);
     }
     // Half the surface area (the sum of the three face areas): proportional to the chance that a
-    // random ray crossing a parent box crosses this one, which is all the SAH needs.
+    // random ray crossing a parent box crosses this one, which is all the SAH needs. A flat box
+    // has the area of its one face; a line or a point has 0 (bvh.cpp copes with a zero parent).
     real half_area() const {
         if (empty()) return 0;
         real dx = x.size(), dy = y.size(), dz = z.size();
@@ -56,6 +73,11 @@ class aabb {
     // Near and far are told apart by the sign of 1 / direction, not by comparing t0 with t1:
     // a comparison with NaN would keep a -inf far distance (a ray along a face with direction
     // -0), and on an empty box (min = +inf > max = -inf) it would swap +-inf into "everywhere".
+    // A flat box (min = max on an axis, a quad in a coordinate plane) needs no padding: a ray
+    // crossing its plane gets t0 = t1 there, an overlap of zero length, and the test rejects
+    // only max < min, after widening the far distance. (The book pads flat boxes by an absolute
+    // 1e-4 because its test also rejects max = min.) A ray parallel to the plane is inside the
+    // slab only if it lies in the plane: 0 * inf = NaN there, +-inf just off it.
     bool hit(const point3& origin, const vec3& inv_dir, interval ray_t) const {
         for (int axis = 0; axis < 3; ++axis) {
             const interval& ax = axis_interval(axis);
@@ -72,26 +94,11 @@ class aabb {
 
   private:
     // Widens the far slab distance by a few ulps so that rounding in the slab test can never
-    // reject a box whose contents the ray does hit (pbrt's 1 + 2 gamma(3)).
+    // reject a box whose contents the ray does hit: each distance (min - A) * (1 / b) is rounded
+    // three times, so it is off by at most gamma(3) = 1.5 eps of itself, and a near distance
+    // compared with a far one needs twice that (pbrt's 1 + 2 gamma(3)). Relative to the
+    // distance, so it holds at every scale.
     static constexpr real robust_factor = 1 + 4 * std::numeric_limits<real>::epsilon();
-
-    // Widens any axis thinner than delta around its middle, as the book does for flat boxes (a
-    // quad in a coordinate plane). The slab test divides by the direction, never by the width,
-    // and the book pads because its test rejects an overlap of zero length (max <= min): the two
-    // slab distances of a flat axis are equal, so without padding no crossing ray would hit a
-    // flat box there.
-    // hit() above needs no padding: it rejects only max < min and widens the far distance, so a
-    // zero-length overlap counts. Without it the Cornell box renders byte for byte the same; we
-    // keep it only so that no box has zero thickness.
-    void pad_to_minimums() {
-        constexpr real delta = real(1e-4);
-        auto pad             = [](interval& i) {
-            if (i.size() < delta) i = interval(i.min - delta / 2, i.max + delta / 2);
-        };
-        pad(x);
-        pad(y);
-        pad(z);
-    }
 };
 
 }  // namespace rt

@@ -22,7 +22,7 @@ class bounded_hittable : public hittable {
 };
 
 aabb bounding_box(const sphere& s);
-aabb bounding_box(const quad& q);  // the box of its four corners; aabb pads a flat one
+aabb bounding_box(const quad& q);  // its four corners' box, a few ulps wider (bounded.cpp)
 inline aabb bounding_box(const bounded_hittable& object) {
     return object.bounding_box();
 }

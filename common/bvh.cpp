@@ -15,17 +15,6 @@ constexpr real traversal_cost     = 1;   // relative to one object test
 constexpr int max_traversal_depth = 64;  // stack size: above what build() can make
 constexpr int max_sah_depth       = 40;  // below it, median splits: at most log2(n) more levels
 
-// The box of one point, not padded: bounds of centroids must see coincident centroids as
-// coincident (a padded point box is 1e-4 wide, so all-equal centroids would look spread out and
-// the builder would bin them all into one middle bin instead of splitting them by count).
-aabb point_box(const point3& p) {
-    aabb box;
-    box.x = interval(p.x(), p.x());
-    box.y = interval(p.y(), p.y());
-    box.z = interval(p.z(), p.z());
-    return box;
-}
-
 }  // namespace
 
 struct bvh::build_item {
@@ -60,7 +49,7 @@ std::uint32_t bvh::build(std::vector<build_item>& items, std::size_t begin, std:
     aabb bounds, centroid_bounds;
     for (std::size_t i = begin; i < end; ++i) {
         bounds          = aabb(bounds, items[i].box);
-        centroid_bounds = aabb(centroid_bounds, point_box(items[i].centroid));
+        centroid_bounds = aabb(centroid_bounds, aabb(items[i].centroid, items[i].centroid));
     }
     const std::size_t count = end - begin;
     auto make_leaf          = [&] {
@@ -104,6 +93,9 @@ std::uint32_t bvh::build(std::vector<build_item>& items, std::size_t begin, std:
         right_area[b]  = right.half_area();
         right_count[b] = right_n;
     }
+    // Boxes may have zero thickness (quads in a coordinate plane), so a parent may have zero
+    // area (all its boxes points, or points on one line): then every cost is 0 / 0 = NaN, no
+    // split beats infinity, and the node becomes a leaf or is split at the median below.
     aabb left;
     std::size_t left_n     = 0;
     real best_cost         = infinity;

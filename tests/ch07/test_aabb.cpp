@@ -1,8 +1,8 @@
 // Tests for aabb.h (chapter 07): the slab test against a reference computed in long double, rays
 // along faces and parallel to axes (where 1 / direction is infinite and 0 * inf is NaN), rays that
-// touch only an edge or a corner (which the far-distance factor must keep), padded flat boxes,
-// the empty box, and the small helpers the BVH builder uses (union, centroid, half_area,
-// longest_axis).
+// touch only an edge or a corner (which the far-distance factor must keep), flat boxes (zero
+// thickness, not padded) at every scale and far from the origin, the empty box, and the small
+// helpers the BVH builder uses (union, centroid, half_area, longest_axis).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
@@ -16,9 +16,8 @@ namespace {
 using rt::aabb, rt::interval, rt::point3, rt::real, rt::vec3;
 
 const interval forward       = interval(0, rt::infinity);
-constexpr real pad_width     = real(1e-4);  // aabb's minimum thickness (pad_to_minimums)
-constexpr real half_pad      = pad_width / 2;
 constexpr real negative_zero = -real(0);
+constexpr real eps           = std::numeric_limits<real>::epsilon();
 
 // The slab test as the BVH calls it: with 1 / direction computed once per ray.
 bool hits(const aabb& box, const point3& origin, const vec3& direction, interval ray_t = forward) {
@@ -272,22 +271,28 @@ TEST_CASE("aabb: rays that touch only an edge or a corner count as hits despite 
     CHECK(false_hits == 0);
 }
 
-TEST_CASE("aabb: flat boxes are padded and hit from both sides and at grazing angles", "[ch07]") {
-    // The box of a quad in the plane y = 0.
+TEST_CASE("aabb: a flat box stays flat, and is hit from both sides and at grazing angles",
+          "[ch07]") {
+    // The box of a quad in the plane y = 0: zero thickness, exactly as given (no padding).
     const aabb flat(point3(0, 0, 0), point3(1, 0, 1));
-    CHECK(flat.y.min == -half_pad);
-    CHECK(flat.y.max == half_pad);
-    CHECK(flat.x.min == 0);  // thick axes are left alone
+    CHECK(flat.y.min == 0);
+    CHECK(flat.y.max == 0);
+    CHECK(flat.x.min == 0);
     CHECK(flat.x.max == 1);
-    CHECK(flat.half_area() > 0);
-    // A thin but not flat box is widened around its middle to at least the minimum.
+    CHECK_FALSE(flat.empty());
+    CHECK(flat.half_area() == 1);  // the area of its one face
+    CHECK(flat.centroid().y() == 0);
+    // A thin box keeps its thickness, however small: nothing is widened.
     const aabb thin(interval(0, 1), interval(2, 2 + real(1e-5)), interval(0, 1));
-    CHECK(thin.y.size() >= pad_width);  // 1e-5 + 1e-4, with room for rounding
-    CHECK(thin.y.min < 2);
-    CHECK(thin.y.max > 2 + real(1e-5));
+    CHECK(thin.y.min == 2);
+    CHECK(thin.y.max == 2 + real(1e-5));
 
     rt::pcg32 rng(4, 4);
     int missed = 0, false_hits = 0;
+    // Crossing the plane 4096 ulps of 1 outside the square (9e-13 for a double), steeply: the
+    // ray leaves the zero-thickness slab at once, so only rounding (a few ulps of the
+    // coordinates and of t) could make it hit.
+    const real beside = 4096 * eps;
     for (int i = 0; i < 20000; ++i) {
         // Cross the plane y = 0 at a point of the square, from above or below, at an angle to
         // the plane from 1 down to 1e-8 radians.
@@ -300,47 +305,148 @@ TEST_CASE("aabb: flat boxes are padded and hit from both sides and at grazing an
         const point3 target(x, 0, z);
         const real back = uniform(rng, real(0.001), 10);
         if (!hits(flat, target - back * d, d)) ++missed;
-        // Crossing 0.01 outside the square, steeply (at least 45 degrees): within the padded
-        // slab the ray moves at most 1e-4 sideways, so it stays outside.
+        // Crossing just outside the square, at least 45 degrees to the plane.
         const real steep = uniform(rng, rt::pi / 4, rt::pi / 2);
         const vec3 s(std::cos(steep) * std::cos(heading), -side * std::sin(steep),
                      std::cos(steep) * std::sin(heading));
-        const point3 outside(i % 4 < 2 ? real(-0.01) : real(1.01), 0, z);
+        const point3 outside(i % 4 < 2 ? -beside : 1 + beside, 0, z);
         if (hits(flat, outside - back * s, s)) ++false_hits;
     }
     CHECK(missed == 0);
     CHECK(false_hits == 0);
-    // Exactly parallel, in the plane and just off it (inside the padding), and beyond it.
-    CHECK(hits(flat, point3(-1, 0, 0.5), vec3(1, 0, 0)));
-    CHECK(hits(flat, point3(-1, real(4e-5), 0.5), vec3(1, 0, 0)));
-    CHECK_FALSE(hits(flat, point3(-1, real(1e-3), 0.5), vec3(1, 0, 0)));
+    // Exactly parallel to the plane: inside the flat slab only when the ray lies in the plane
+    // (0 * inf = NaN there, with either zero as the direction's y); off the plane by any amount,
+    // even the smallest a real holds (a denormal), it misses.
+    for (real zero : {real(0), negative_zero}) {
+        CAPTURE(zero);
+        CHECK(hits(flat, point3(-1, 0, 0.5), vec3(1, zero, 0)));
+        CHECK(hits(flat, point3(-1, negative_zero, 0.5), vec3(1, zero, 0.25)));
+        CHECK(hits(flat, point3(0.5, 0, 0.5), vec3(0, zero, -1)));  // starting on the face
+        for (real off : {std::numeric_limits<real>::denorm_min(), eps, real(4e-5)}) {
+            CAPTURE(off);
+            CHECK_FALSE(hits(flat, point3(-1, off, 0.5), vec3(1, zero, 0)));
+            CHECK_FALSE(hits(flat, point3(-1, -off, 0.5), vec3(1, zero, 0)));
+        }
+    }
 }
 
-TEST_CASE("aabb: a flat box far from the origin, where the padding rounds away, is still hit",
-          "[hardcase][ch07]") {
-    // At y = 2^40 an ulp is 2^-12 = 2.4e-4, more than the padding: y +- 5e-5 rounds back to y
-    // and the box stays flat. The slab test must not need the thickness: on a crossing ray both
-    // y distances are equal, and the far-distance factor keeps the interval non-empty.
-    if constexpr (std::numeric_limits<real>::digits < 53) {
-        WARN("skipped: needs real = double (a float cannot place points near 2^40 finely)");
-        return;
+TEST_CASE(
+    "aabb: a flat box is hit by every ray through it, at scales 1e-4 to 1e4 and far from the "
+    "origin",
+    "[hardcase][ch07]") {
+    // Exact rays through exact points, so the answer is known. Everything lies on a grid of step
+    // h = 2^e (e in [-14, 13]: boxes of 1e-4 .. 1e4) around a center B that is the origin or
+    // 2^(digits - 8) steps from it on each axis, of either sign (2^45 h for a double, where an
+    // ulp is h / 128; 2^16 h for a float). The box is a rectangle of the grid in the plane
+    // x_k = const; P is one of its corners, a point of an edge, an inner point, or (to check that
+    // the test can fail) a point one step outside it. The ray runs from o = P - m h c to P along
+    // d = q c: c has integer components up to 2^20 (2^6 for a float), so the angle to the plane
+    // goes from 90 degrees down to 1e-6 (0.01), some components are +0 or -0 (1 / d infinite),
+    // and a tenth of the rays lie in the plane. q is 3, 5, 7, 11 or 13 so that 1 / d is not
+    // exact: every slab distance is rounded.
+    constexpr int digits = std::numeric_limits<real>::digits;
+    const int c_bits     = digits / 2 - 6;
+    const real far_steps = std::ldexp(real(1), digits - 8);
+    const int qs[]       = {3, 5, 7, 11, 13};
+    rt::pcg32 rng(14, 2);
+    long long through = 0, missed = 0, beside = 0, false_hits = 0, behind_hits = 0, in_plane = 0;
+    for (int i = 0; i < 200000; ++i) {
+        const real h = std::ldexp(real(1), random_int(rng, -14, 13));
+        point3 center;
+        for (int a = 0; a < 3; ++a) center[a] = real(random_int(rng, -1, 1)) * far_steps * h;
+        if (i % 4 == 0) center = point3(0, 0, 0);
+        const int k = i % 3, a1 = (k + 1) % 3, a2 = (k + 2) % 3;
+        // The rectangle, in steps: the plane at `level`, [lo, hi] on a1 and a2.
+        const int level = random_int(rng, -32, 32);
+        int lo[3], hi[3], at[3];
+        for (int a : {a1, a2}) {
+            lo[a] = random_int(rng, -32, 31);
+            hi[a] = random_int(rng, lo[a] + 1, 32);
+        }
+        // P, in steps: on a corner, an edge, inside, or one step outside along one axis.
+        const int kind = i % 4;
+        for (int a : {a1, a2}) {
+            const bool end = kind == 0 || (kind == 1 && a == a1);
+            at[a] = end ? (random_int(rng, 0, 1) ? hi[a] : lo[a]) : random_int(rng, lo[a], hi[a]);
+        }
+        if (kind == 3) at[a1] = random_int(rng, 0, 1) ? hi[a1] + 1 : lo[a1] - 1;
+        at[k] = level;
+        point3 box_lo, box_hi, p;
+        box_lo[k] = box_hi[k] = p[k] = center[k] + h * real(level);
+        for (int a : {a1, a2}) {
+            box_lo[a] = center[a] + h * real(lo[a]);
+            box_hi[a] = center[a] + h * real(hi[a]);
+            p[a]      = center[a] + h * real(at[a]);
+        }
+        const aabb flat(box_lo, box_hi);
+        // The direction: each component 0 (of either sign) or an integer of 1 .. 2^c_bits.
+        vec3 c;
+        for (int a = 0; a < 3; ++a) {
+            const int magnitude = int(std::ldexp(1.0, random_int(rng, 0, c_bits)));
+            const int size      = random_int(rng, (magnitude + 1) / 2, magnitude);
+            c[a]                = real(random_int(rng, 0, 1) ? size : -size);
+        }
+        const bool lies_in_plane = i % 10 == 9;
+        if (lies_in_plane) c[k] = 0;
+        if (i % 7 == 0) c[a1] = 0;
+        if (c[k] == 0 && c[a1] == 0 && c[a2] == 0) c[a2] = 1;
+        const real q = real(qs[random_int(rng, 0, 4)]);
+        vec3 d       = q * c;
+        for (int a = 0; a < 3; ++a) {
+            if (d[a] == 0 && random_int(rng, 0, 1)) d[a] = negative_zero;
+        }
+        const point3 o = p - real(random_int(rng, 1, 16)) * h * c;
+        CAPTURE(h, center, k, p, o, d);
+        if (kind == 3) {
+            if (lies_in_plane) continue;  // along the plane it may still cross the rectangle
+            ++beside;
+            if (hits(flat, o, d)) ++false_hits;
+            continue;
+        }
+        ++through;
+        in_plane += lies_in_plane;
+        if (!hits(flat, o, d)) {
+            if (++missed <= 5) UNSCOPED_INFO("missed: origin " << o << ", direction " << d);
+        }
+        // Turned around, the ray leaves the plane behind it (unless it lies in it).
+        if (!lies_in_plane && hits(flat, o, -d)) ++behind_hits;
     }
-    const real y = std::ldexp(real(1), 40);
-    const aabb flat(point3(-1, y, -1), point3(1, y, 1));
-    CHECK(flat.y.contains(y));
-    CHECK_FALSE(flat.empty());
-    rt::pcg32 rng(6, 6);
-    int missed = 0;
-    for (int i = 0; i < 10000; ++i) {
-        const point3 target(uniform(rng, real(-0.99), real(0.99)), y,
-                            uniform(rng, real(-0.99), real(0.99)));
-        const real side = i % 2 == 0 ? 1 : -1;
-        vec3 d          = random_unit(rng);
-        d[1]            = -side * (std::fabs(d[1]) + real(0.1));
-        const point3 o  = target - uniform(rng, 1, 100) * d;
-        if (!hits(flat, o, d)) ++missed;
-    }
+    INFO(through << " rays through the box (" << in_plane << " in its plane), " << beside
+                 << " beside it");
+    CHECK(through > 100000);
+    CHECK(in_plane > 5000);
+    CHECK(beside > 20000);
     CHECK(missed == 0);
+    CHECK(false_hits == 0);
+    CHECK(behind_hits == 0);
+}
+
+TEST_CASE("aabb: a flat box far from the origin, where an ulp is 2.4e-4, is hit by crossing rays",
+          "[hardcase][ch07]") {
+    // At |y| = 2^40 an ulp is 2^-12 = 2.4e-4 (the book's 1e-4 padding would round away there).
+    // On a crossing ray both y distances are equal, and the far-distance factor keeps the
+    // interval non-empty. Random, inexact rays: above and below the plane, on either side of
+    // the origin.
+    if (rt_test::needs_double()) return;
+    for (const real y : {std::ldexp(real(1), 40), -std::ldexp(real(1), 40)}) {
+        CAPTURE(y);
+        const aabb flat(point3(-1, y, -1), point3(1, y, 1));
+        CHECK(flat.y.min == y);
+        CHECK(flat.y.max == y);
+        CHECK_FALSE(flat.empty());
+        rt::pcg32 rng(6, 6);
+        int missed = 0;
+        for (int i = 0; i < 10000; ++i) {
+            const point3 target(uniform(rng, real(-0.99), real(0.99)), y,
+                                uniform(rng, real(-0.99), real(0.99)));
+            const real side = i % 2 == 0 ? 1 : -1;
+            vec3 d          = random_unit(rng);
+            d[1]            = -side * (std::fabs(d[1]) + real(0.1));
+            const point3 o  = target - uniform(rng, 1, 100) * d;
+            if (!hits(flat, o, d)) ++missed;
+        }
+        CHECK(missed == 0);
+    }
 }
 
 TEST_CASE("aabb: the empty box is missed by every ray", "[ch07]") {
@@ -408,12 +514,26 @@ TEST_CASE("aabb: union, centroid, half_area and longest_axis", "[ch07]") {
             CHECK(e.axis_interval(axis).max == a.axis_interval(axis).max);
         }
     }
-    // A point's box is padded on every axis, around the point, to the minimum up to the
-    // rounding of its ends (an ulp of 3 each).
-    const aabb point_box(point3(1, 2, 3), point3(1, 2, 3));
+    // A point's box is the point: zero size and zero area, not empty. A ray through the point
+    // still hits it (every axis puts the point at t = 3, each with its own rounding, and the
+    // far-distance factor keeps them overlapping); the same ray moved 1/1024 aside misses.
+    const point3 point(1, 2, 3);
+    const aabb point_box(point, point);
     for (int axis = 0; axis < 3; ++axis) {
-        CHECK(point_box.axis_interval(axis).size() >=
-              pad_width - 2 * 3 * std::numeric_limits<real>::epsilon());
-        CHECK(point_box.axis_interval(axis).surrounds(real(axis + 1)));
+        CHECK(point_box.axis_interval(axis).min == real(axis + 1));
+        CHECK(point_box.axis_interval(axis).max == real(axis + 1));
+    }
+    CHECK_FALSE(point_box.empty());
+    CHECK(point_box.half_area() == 0);
+    // A line (two flat axes) has zero area too.
+    const aabb line(point3(0, 2, 3), point3(4, 2, 3));
+    CHECK(line.half_area() == 0);
+    CHECK(line.longest_axis() == 0);
+    for (const vec3& dir : {vec3(3, 5, 7), vec3(-7, 11, 13), vec3(13, -3, -11), vec3(0, -5, 3)}) {
+        CAPTURE(dir);
+        CHECK(hits(point_box, point - 3 * dir, dir));
+        CHECK(hits(line, point - 3 * dir, dir));
+        CHECK_FALSE(hits(point_box, point - 3 * dir + vec3(real(1) / 1024, 0, 0), dir));
+        CHECK_FALSE(hits(line, point - 3 * dir + vec3(0, real(1) / 1024, 0), dir));
     }
 }

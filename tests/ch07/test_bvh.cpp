@@ -436,8 +436,8 @@ TEST_CASE("bvh: exponentially spaced objects keep the depth within the traversal
 }
 
 TEST_CASE("bvh: coplanar quads (flat boxes in y = 0) from above, below and grazing", "[ch07]") {
-    // A 20 x 20 grid of squares with gaps, all in the plane y = 0: every box is flat (padded),
-    // and every centroid has y = 0.
+    // A 20 x 20 grid of squares with gaps, all in the plane y = 0: every box is flat (zero
+    // thickness, not padded), and every centroid has y = 0.
     object_list objects;
     for (int i = 0; i < 20; ++i)
         for (int j = 0; j < 20; ++j)
@@ -463,6 +463,83 @@ TEST_CASE("bvh: coplanar quads (flat boxes in y = 0) from above, below and grazi
     }
     CHECK(c.mismatches == 0);
     CHECK(c.hits > 10000);
+}
+
+TEST_CASE("bvh: boxes of zero thickness (flat, line and point boxes) build without dividing by 0",
+          "[ch07]") {
+    // Boxes are not padded, so they can be flat (a quad in a coordinate plane: the area of its
+    // face), lines (a moving sphere much thinner than an ulp of its center, moving along an
+    // axis) or points (such a sphere at rest: center -+ radius rounds to the center). A node
+    // whose boxes all lie on one line, or are one point, has zero area, so every SAH cost is
+    // 0 / 0 = NaN: no split may be chosen for it and nothing may loop; the builder splits such
+    // a node at the median.
+    const real r      = real(1e-30);
+    auto point_sphere = [&](const point3& c) { return sphere_at(c, r); };
+    auto line_sphere  = [&](const point3& c, real length) {
+        return std::make_shared<rt::moving_sphere>(c, c + vec3(length, 0, 0), r, own_material());
+    };
+    // The boxes really are points and lines.
+    REQUIRE(rt::bounded_object(point_sphere(point3(1.5, 2, 3))).box.half_area() == 0);
+    REQUIRE(rt::bounded_object(line_sphere(point3(1.5, 2, 3), 1)).box.half_area() == 0);
+    REQUIRE(rt::bounded_object(line_sphere(point3(1.5, 2, 3), 1)).box.x.size() == 1);
+
+    // 300 points on one line along x: every node has zero area. Split at the median, the tree
+    // is exactly as deep as halving 300 down to leaves of at most 4.
+    object_list on_a_line;
+    for (int i = 0; i < 300; ++i)
+        on_a_line.push_back(point_sphere(point3(1 + real(0.5) * real(i), 2, 3)));
+    const rt::bvh line_tree(on_a_line);
+    check_shape(line_tree, on_a_line);
+    CHECK(line_tree.bounding_box().half_area() == 0);
+    CHECK(line_tree.depth() == log2_ceil(std::size_t(300 + 3) / 4) + 1);
+    // 100 segments along one line (overlapping), and 100 identical points: zero area again,
+    // and coincident centroids for the points.
+    object_list segments, same_point;
+    rt::pcg32 rng(16, 16);
+    for (int i = 0; i < 100; ++i) {
+        segments.push_back(line_sphere(point3(uniform(rng, 1, 10), -4, 5), uniform(rng, 0, 3)));
+        same_point.push_back(point_sphere(point3(-2, 7, 1)));
+    }
+    for (const object_list* objects : {&segments, &same_point}) {
+        const rt::bvh tree(*objects);
+        check_shape(tree, *objects);
+        CHECK(tree.bounding_box().half_area() == 0);
+        CHECK(tree.depth() < 3 * log2_ceil(objects->size()) + 4);
+    }
+
+    // All kinds together with ordinary spheres: flat quads in the three coordinate planes,
+    // points and lines; the same closest hits as the list. Rays aim at the spheres and quads,
+    // not at the tiny spheres: only a ray through a tiny sphere's very center (one aimed at its
+    // box) can hit it, and then p - center = 0 and the sphere's p and normal are NaN, a limit
+    // of the sphere's own arithmetic (radius far below an ulp of its center), not of the tree.
+    object_list mixed         = random_scene(rng, 200, layout::spread);
+    std::vector<aabb> targets = boxes_of(mixed);
+    for (int i = 0; i < 200; ++i) {
+        const point3 c = random_point(rng, point3(0, 0, 0), 10);
+        const int axis = i % 3;
+        vec3 u(0, 0, 0), v(0, 0, 0);
+        u[(axis + 1) % 3] = uniform(rng, real(0.2), 3);
+        v[(axis + 2) % 3] = uniform(rng, real(0.2), 3);
+        mixed.push_back(std::make_shared<rt::quad>(c, u, v, own_material()));
+        targets.push_back(mixed.back().box);
+        const point3 elsewhere = random_point(rng, point3(0, 0, 0), 10);
+        if (i % 2)
+            mixed.push_back(point_sphere(elsewhere));
+        else
+            mixed.push_back(line_sphere(elsewhere, uniform(rng, 0, 2)));
+    }
+    const rt::bvh tree(mixed);
+    check_shape(tree, mixed);
+    CHECK(tree.depth() < 3 * log2_ceil(mixed.size()) + 4);
+    const rt::hittable_list list = list_of(mixed);
+    const aabb bounds            = union_of(mixed);
+    comparison c;
+    for (long long i = 0; i < 20000; ++i) {
+        auto [ray, ray_t] = random_ray(rng, bounds, targets, i);
+        c.check(list, tree, ray, ray_t);
+    }
+    CHECK(c.mismatches == 0);
+    CHECK(c.hits > 5000);
 }
 
 TEST_CASE("bvh: objects with empty boxes (empty bvhs) among others", "[ch07]") {
