@@ -30,8 +30,12 @@ namespace {
     rec.t = root;
     // Project the point back onto the sphere: p then lies within a few ulps of the surface
     // whatever the distance travelled, which keeps the spawn offset small.
-    vec3 from_center    = r.at(root) - center;
-    vec3 outward_normal = from_center / from_center.length();
+    vec3 from_center = r.at(root) - center;
+    real distance    = from_center.length();
+    // A sphere smaller than the rounding of its own position (radius far below an ulp of its
+    // center) can put the hit exactly at its center: 0/0. Its normal then faces the ray, so no
+    // NaN reaches a pixel.
+    vec3 outward_normal = distance > 0 ? from_center / distance : -unit_vector(r.direction());
     rec.p               = center + radius * outward_normal;
     rec.p_error         = spawn_offset_scale * (max_abs_component(center) + radius);
     rec.set_face_normal(r, outward_normal);
