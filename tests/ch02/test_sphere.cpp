@@ -365,7 +365,7 @@ TEST_CASE("sphere: a sphere below the rounding of its own position gives no NaN"
     // Radius 1e-12 at x = 1e8, where an ulp is 1.5e-8 (double): a ray straight through the center
     // lands exactly on it, and the normal would be 0/0.
     if (rt_test::needs_double()) return;
-    const rt::sphere speck(point3(1e8, 0, 0), 1e-12);
+    const rt::sphere speck(point3(1e8, 0, 0), real(1e-12));
     const rt::ray r(point3(0, 0, 0), vec3(1, 0, 0));
     rt::hit_record rec;
     REQUIRE(speck.hit(r, rt::interval(0, rt::infinity), rec));
