@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "ch03/material_helpers.h"
+#include "ch12/ray_recorder.h"
 #include "common/box.h"
 #include "common/constant_medium.h"
 #include "common/error.h"
@@ -148,20 +149,7 @@ rt_test::chi_square_result joint_uniformity(const std::vector<real>& a, const st
 
 // Records the rays it is asked about and passes them on to the object it wraps, so that a test
 // sees the ray a placement hands its object.
-class ray_recorder : public rt::bounded_hittable {
-  public:
-    explicit ray_recorder(const rt::bounded_object& o) : object(o.object), box(o.box) {}
-    bool hit(const rt::ray& r, rt::interval ray_t, rt::hit_record& rec) const override {
-        rays.push_back(r);
-        return object->hit(r, ray_t, rec);
-    }
-    rt::aabb bounding_box() const override { return box; }
-    mutable std::vector<rt::ray> rays;
-
-  private:
-    std::shared_ptr<rt::hittable> object;
-    rt::aabb box;
-};
+using rt_test::ray_recorder;
 
 }  // namespace
 

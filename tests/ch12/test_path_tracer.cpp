@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "ch03/material_helpers.h"
+#include "ch12/ray_recorder.h"
 #include "common/box.h"
 #include "common/constant_medium.h"
 #include "common/hittable_list.h"
@@ -24,20 +25,7 @@ using rt_test::any_material, rt_test::exactly;
 const color albedo(real(0.6), real(0.6), real(0.6));
 
 // Records the rays it is asked about and passes them on to the object it wraps.
-class ray_recorder : public rt::bounded_hittable {
-  public:
-    explicit ray_recorder(const rt::bounded_object& o) : object(o.object), box(o.box) {}
-    bool hit(const rt::ray& r, rt::interval ray_t, rt::hit_record& rec) const override {
-        rays.push_back(r);
-        return object->hit(r, ray_t, rec);
-    }
-    rt::aabb bounding_box() const override { return box; }
-    mutable std::vector<rt::ray> rays;
-
-  private:
-    std::shared_ptr<rt::hittable> object;
-    rt::aabb box;
-};
+using rt_test::ray_recorder;
 
 }  // namespace
 
