@@ -1,42 +1,139 @@
 #include "image_texture.h"
 
 #include <stb/stb_image.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <array>
-#include <memory>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <optional>
+#include <system_error>
 
 #include "display_encoding.h"
 #include "error.h"
 
 namespace rt {
 
-image_texture::image_texture(const std::string& path) {
-    int channels = 0;
-    std::unique_ptr<stbi_uc, void (*)(void*)> pixels(stbi_load(path.c_str(), &w, &h, &channels, 3),
-                                                     stbi_image_free);
-    if (!pixels) {
-        // stb gives no reason for some broken files (a PNG cut just before its end chunk).
-        const char* reason = stbi_failure_reason();
-        throw user_error("cannot read texture '" + path +
-                         "': " + (reason && *reason ? reason : "not a readable image"));
+namespace {
+
+// 8-bit sRGB code -> linear light: 256 values, computed once for every texture.
+const std::array<real, 256>& srgb8_to_linear() {
+    static const std::array<real, 256> table = [] {
+        std::array<real, 256> t{};
+        for (int i = 0; i < 256; ++i) t[std::size_t(i)] = real(srgb_to_linear(i / 255.0));
+        return t;
+    }();
+    return table;
+}
+
+[[noreturn]] void refuse(const std::string& path, const std::string& reason) {
+    throw user_error("cannot read texture '" + path + "': " + reason);
+}
+
+// stb's reason for its last failure, in brackets, or nothing: it gives none for some broken
+// files (a PNG cut just before its end chunk).
+std::string stb_reason() {
+    const char* reason = stbi_failure_reason();
+    return reason && *reason ? std::string(" (") + reason + ")" : "";
+}
+
+struct declared_size {
+    std::int64_t width = 0, height = 0;
+};
+
+std::uint32_t big_endian(const unsigned char* b, int bytes) {
+    std::uint32_t x = 0;
+    for (int i = 0; i < bytes; ++i) x = x << 8 | b[i];
+    return x;
+}
+
+// The size a PNG or JPEG header declares, read by hand from the file's start, or nothing. Used
+// only to explain a file stbi_info refused: stb refuses a PNG or JPEG of more than 2^24 texels a
+// side or 2^30 (PNG) or 2^31 (JPEG) bytes with the same "unknown image type" as a text file.
+std::optional<declared_size> png_or_jpeg_size(std::FILE* file) {
+    std::array<unsigned char, 24> head{};
+    std::rewind(file);
+    const std::size_t got = std::fread(head.data(), 1, head.size(), file);
+    // PNG: the 8-byte signature, then the IHDR chunk (length, "IHDR", width, height, ...).
+    if (got == 24 && std::memcmp(head.data(), "\x89PNG\r\n\x1a\n", 8) == 0 &&
+        std::memcmp(head.data() + 12, "IHDR", 4) == 0)
+        return declared_size{big_endian(&head[16], 4), big_endian(&head[20], 4)};
+    if (got < 2 || head[0] != 0xFF || head[1] != 0xD8) return std::nullopt;
+    // JPEG: segments "FF marker length(2) ...", until a start of frame: precision(1), height(2),
+    // width(2). Every step moves forward, so the walk ends at the end of the file.
+    std::rewind(file);
+    std::fseek(file, 2, SEEK_SET);
+    for (;;) {
+        std::array<unsigned char, 4> segment{};
+        if (std::fread(segment.data(), 1, 4, file) != 4 || segment[0] != 0xFF) return std::nullopt;
+        const int marker  = segment[1];
+        const long length = long(big_endian(&segment[2], 2));
+        const bool frame =
+            marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC;
+        if (frame) {
+            std::array<unsigned char, 5> sof{};
+            if (std::fread(sof.data(), 1, 5, file) != 5) return std::nullopt;
+            return declared_size{big_endian(&sof[3], 2), big_endian(&sof[1], 2)};
+        }
+        if (length < 2 || std::fseek(file, length - 2, SEEK_CUR) != 0) return std::nullopt;
     }
-    std::array<real, 256> to_linear{};
-    for (int i = 0; i < 256; ++i) to_linear[std::size_t(i)] = real(srgb_to_linear(i / 255.0));
-    texels.resize(std::size_t(w) * std::size_t(h));
-    for (std::size_t i = 0; i < texels.size(); ++i) {
-        const stbi_uc* t = pixels.get() + 3 * i;
-        texels[i]        = color(to_linear[t[0]], to_linear[t[1]], to_linear[t[2]]);
+}
+
+}  // namespace
+
+void image_texture::stb_free::operator()(unsigned char* pixels) const {
+    stbi_image_free(pixels);
+}
+
+image_texture::image_texture(const std::string& path, std::int64_t texel_limit) {
+    // One open file for the header and the pixels, so both are read from the same file.
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
+                                                         std::fclose);
+    if (!file) refuse(path, std::error_code(errno, std::generic_category()).message());
+    // A folder opens but cannot be read; a pipe or device cannot seek back after the header.
+    struct stat about {};
+    if (fstat(fileno(file.get()), &about) != 0 || !S_ISREG(about.st_mode))
+        refuse(path, S_ISDIR(about.st_mode) ? "it is a folder" : "it is not a regular file");
+    if (about.st_size == 0) refuse(path, "the file is empty");
+
+    // The header first: the size is checked before stb allocates anything.
+    auto refuse_size = [&](std::int64_t width, std::int64_t height) {
+        throw user_error("texture '" + path + "' must have at most " + std::to_string(texel_limit) +
+                         " texels" + (texel_limit == max_texels ? " (2^26)" : "") + ", got " +
+                         std::to_string(width) + " x " + std::to_string(height));
+    };
+    int header_w = 0, header_h = 0, channels = 0;
+    if (!stbi_info_from_file(file.get(), &header_w, &header_h, &channels)) {
+        auto size = png_or_jpeg_size(file.get());
+        if (size && size->width * size->height > texel_limit)
+            refuse_size(size->width, size->height);
+        refuse(path, "not an image stb_image can read");
     }
+    if (header_w < 1 || header_h < 1 || std::int64_t(header_w) * header_h > texel_limit)
+        refuse_size(header_w, header_h);
+
+    unsigned char* pixels = stbi_load_from_file(file.get(), &w, &h, &channels, 3);
+    texels.reset(pixels);
+    if (!pixels) refuse(path, "damaged or truncated image" + stb_reason());
+    // stb reads the same header twice; should a decoder ever disagree with its own header, the
+    // buffer would not be the size the limit was checked on.
+    if (w != header_w || h != header_h)
+        refuse(path, "its header says " + std::to_string(header_w) + " x " +
+                         std::to_string(header_h) + " but its image is " + std::to_string(w) +
+                         " x " + std::to_string(h));
 }
 
 color image_texture::value(real u, real v, const point3&) const {
     // Clamp to [0, 1]; the negated comparisons also send NaN to 0.
-    u       = !(u > 0) ? 0 : std::min(u, real(1));
-    v       = !(v > 0) ? 0 : std::min(v, real(1));
-    int col = std::min(int(u * real(w)), w - 1);
-    int row = std::min(int((1 - v) * real(h)), h - 1);
-    return texels[std::size_t(row) * std::size_t(w) + std::size_t(col)];
+    u                      = !(u > 0) ? 0 : std::min(u, real(1));
+    v                      = !(v > 0) ? 0 : std::min(v, real(1));
+    int col                = std::min(int(u * real(w)), w - 1);
+    int row                = std::min(int((1 - v) * real(h)), h - 1);
+    const unsigned char* t = texels.get() + 3 * (std::size_t(row) * std::size_t(w) + col);
+    const auto& linear     = srgb8_to_linear();
+    return color(linear[t[0]], linear[t[1]], linear[t[2]]);
 }
 
 }  // namespace rt

@@ -1,12 +1,18 @@
 // A texture from an image file, looked up at the nearest texel. Chapter 08.
 // u runs left to right, v bottom to top (image rows are stored top first, so row = (1 - v) H);
-// u and v are clamped to [0, 1]. Texels are 8-bit sRGB, decoded to linear light on load (the
-// book divides by 255 without decoding, which makes textures look washed out once the output
-// is sRGB-encoded).
+// u and v are clamped to [0, 1]. Texels are kept as the file's 8-bit sRGB bytes, 3 bytes a
+// texel, and decoded to linear light at lookup through a 256-entry table (the book divides by
+// 255 without decoding, which makes textures look washed out once the output is sRGB-encoded).
+//
+// Hostile files: the header is read (stbi_info) before anything is decoded or allocated, and an
+// image of more than max_texels = 2^26 texels (8192 x 8192; 192 MiB of texels) is refused
+// there, as film.h refuses a render of more than 2^26 pixels. So a small PNG that claims to be
+// 100000 x 100000 costs nothing.
 #pragma once
 
+#include <cstdint>
+#include <memory>
 #include <string>
-#include <vector>
 
 #include "texture.h"
 
@@ -14,9 +20,14 @@ namespace rt {
 
 class image_texture : public texture {
   public:
-    // Loads PNG, JPEG, BMP, TGA, ... with stb_image. Throws user_error naming the file and the
-    // reason when it is missing, empty, truncated or not an image.
-    explicit image_texture(const std::string& path);
+    // The most texels a texture may have: 2^26, 192 MiB of 8-bit RGB.
+    static constexpr std::int64_t max_texels = std::int64_t(1) << 26;
+
+    // Loads PNG, JPEG, PPM/PGM, BMP, TGA, GIF, ... with stb_image. Throws user_error, one line
+    // naming the file, when it is missing, not a regular file, empty, not an image, truncated or
+    // damaged, or larger than texel_limit texels (tests and the fuzz target pass a smaller limit
+    // to reach the refusal with small files).
+    explicit image_texture(const std::string& path, std::int64_t texel_limit = max_texels);
 
     color value(real u, real v, const point3& p) const override;
     bool uses_uv() const override { return true; }
@@ -25,8 +36,13 @@ class image_texture : public texture {
     int height() const { return h; }
 
   private:
+    struct stb_free {
+        void operator()(unsigned char* pixels) const;
+    };
+
     int w = 0, h = 0;
-    std::vector<color> texels;  // linear RGB, row 0 at the top
+    // 8-bit sRGB RGB, row 0 at the top: the buffer stb_image decoded into, kept as it is.
+    std::unique_ptr<unsigned char, stb_free> texels;
 };
 
 }  // namespace rt

@@ -1,8 +1,9 @@
 // Tests for image_texture.h (chapter 08). Small PNGs are written with stb_image_write into a
 // fresh temporary folder: the lookup picks the nearest texel with u = 0 the left column and
 // v = 1 the top row, clamps u and v (NaN too) to the edge texels, decodes 8-bit sRGB to linear
-// light, and refuses missing, empty, truncated and non-image files with a user_error that names
-// the file.
+// light, and refuses missing, empty, truncated, non-image and too large files with a user_error
+// that names the file; the size is read from the header, so a file that claims to be enormous
+// is refused before anything is decoded.
 #include <stb/stb_image_write.h>
 #include <unistd.h>
 
@@ -64,6 +65,45 @@ const color top_left = decoded(255, 0, 0), top_right = decoded(0, 255, 0),
 
 color at(const rt::image_texture& t, real u, real v) {
     return t.value(u, v, point3(0, 0, 0));
+}
+
+// The message of the user_error that loading `path` throws, or a note that it loaded.
+std::string refusal(const std::string& path, std::int64_t limit = rt::image_texture::max_texels) {
+    try {
+        rt::image_texture t(path, limit);
+        return "(loaded " + std::to_string(t.width()) + " x " + std::to_string(t.height()) +
+               " without an error)";
+    } catch (const rt::user_error& e) {
+        return e.what();
+    }
+}
+
+// The CRC-32 of PNG chunks (ISO 3309, reflected polynomial 0xEDB88320), bit by bit.
+std::uint32_t crc32(const std::string& bytes) {
+    std::uint32_t crc = 0xFFFFFFFFu;
+    for (unsigned char byte : bytes) {
+        crc ^= byte;
+        for (int bit = 0; bit < 8; ++bit) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
+    }
+    return ~crc;
+}
+
+std::string big_endian(std::uint32_t x) {
+    return {char(x >> 24), char(x >> 16), char(x >> 8), char(x)};
+}
+
+// One PNG chunk: length, type, data, CRC of type and data.
+std::string png_chunk(const std::string& type, const std::string& data) {
+    return big_endian(std::uint32_t(data.size())) + type + data + big_endian(crc32(type + data));
+}
+
+// A PNG of 8-bit RGB whose header (IHDR) claims width x height, with no image data: all a
+// reader of the header sees is a valid file of that size.
+std::string png_claiming(std::uint32_t width, std::uint32_t height) {
+    const std::string signature = "\x89PNG\r\n\x1a\n";
+    const std::string ihdr      = big_endian(width) + big_endian(height) +
+                             std::string("\x08\x02\x00\x00\x00", 5);  // 8 bit, RGB
+    return signature + png_chunk("IHDR", ihdr) + png_chunk("IEND", "");
 }
 
 }  // namespace
@@ -225,4 +265,94 @@ TEST_CASE(
         // And a reason after the name.
         CHECK_THAT(message, !Catch::EndsWith(": ") && !Catch::EndsWith("'"));
     }
+}
+
+TEST_CASE("image_texture: a folder or a device is refused, naming it", "[ch08]") {
+    temp_folder dir("image_texture", "not_files");
+    const std::string folder = dir.file("textures.png");
+    fs::create_directory(folder);
+    CHECK_THAT(refusal(folder),
+               Catch::Contains("'" + folder + "'") && Catch::Contains("it is a folder"));
+    CHECK_THAT(refusal("/dev/null"),
+               Catch::Contains("'/dev/null'") && Catch::Contains("not a regular file"));
+}
+
+TEST_CASE("image_texture: the CRC of the hand-made PNG chunks is the standard one", "[ch08]") {
+    // The check value of CRC-32 (ISO 3309), and the IEND chunk every PNG ends with.
+    CHECK(crc32("123456789") == 0xCBF43926u);
+    CHECK(png_chunk("IEND", "") == std::string("\0\0\0\0IEND\xAE\x42\x60\x82", 12));
+}
+
+TEST_CASE(
+    "image_texture: a file whose header claims more than 2^26 texels is refused from the "
+    "header, naming the file and the size",
+    "[ch08]") {
+    temp_folder dir("image_texture", "enormous");
+    // 100000 x 100000 texels would be 30 GB of 8-bit RGB: the file itself is 57 bytes.
+    write_bytes(dir.file("huge.png"), png_claiming(100000, 100000));
+    const std::string message = refusal(dir.file("huge.png"));
+    CHECK_THAT(message, Catch::Contains("'" + dir.file("huge.png") + "'"));
+    CHECK_THAT(message, Catch::Contains("must have at most 67108864 texels (2^26)"));
+    CHECK_THAT(message, Catch::EndsWith("got 100000 x 100000"));
+    CHECK(message.find('\n') == std::string::npos);
+
+    // The same from a PPM header, and one side alone may be long: 2^26 + 1 texels in one row.
+    write_bytes(dir.file("huge.ppm"), "P6\n100000 100000\n255\n" + std::string(30, '\0'));
+    CHECK_THAT(refusal(dir.file("huge.ppm")), Catch::EndsWith("got 100000 x 100000"));
+    write_bytes(dir.file("long.png"), png_claiming((1u << 26) + 1, 1));
+    CHECK_THAT(refusal(dir.file("long.png")), Catch::EndsWith("got 67108865 x 1"));
+
+    // A JPEG's start of frame (SOF0) claiming 65535 x 65535, the most it can, and 10000 x 10000
+    // (stb itself refuses the first from its header, as "unknown image type"; the second only
+    // our limit stops).
+    auto jpeg_claiming = [](std::uint32_t width, std::uint32_t height) {
+        return std::string("\xFF\xD8\xFF\xC0\x00\x11\x08", 7) + big_endian(height).substr(2) +
+               big_endian(width).substr(2) +
+               std::string("\x03\x01\x22\x00\x02\x11\x01\x03\x11\x01\xFF\xD9", 12);
+    };
+    write_bytes(dir.file("huge.jpg"), jpeg_claiming(65535, 65535));
+    CHECK_THAT(refusal(dir.file("huge.jpg")), Catch::Contains("'" + dir.file("huge.jpg") + "'") &&
+                                                  Catch::EndsWith("got 65535 x 65535"));
+    write_bytes(dir.file("big.jpg"), jpeg_claiming(10000, 10000));
+    CHECK_THAT(refusal(dir.file("big.jpg")), Catch::EndsWith("got 10000 x 10000"));
+
+    // 8192 x 8192 is exactly 2^26: within the limit, so this file gets as far as the decoder,
+    // which refuses it for having no image data, not for its size.
+    write_bytes(dir.file("limit.png"), png_claiming(8192, 8192));
+    CHECK_THAT(refusal(dir.file("limit.png")), Catch::Contains("'" + dir.file("limit.png") + "'") &&
+                                                   Catch::Contains("damaged or truncated") &&
+                                                   !Catch::Contains("texels"));
+    write_bytes(dir.file("over.png"), png_claiming(8193, 8192));
+    CHECK_THAT(refusal(dir.file("over.png")), Catch::EndsWith("got 8193 x 8192"));
+}
+
+TEST_CASE("image_texture: the texel limit is inclusive, and a smaller one refuses small files",
+          "[ch08]") {
+    temp_folder dir("image_texture", "limit");
+    write_png(dir.file("quad.png"), 2, 2, 3, two_by_two);
+    CHECK_NOTHROW(rt::image_texture(dir.file("quad.png"), 4));
+    CHECK_THAT(refusal(dir.file("quad.png"), 3),
+               Catch::Contains("'" + dir.file("quad.png") +
+                               "' must have at most 3 texels, got "
+                               "2 x 2"));
+}
+
+TEST_CASE("image_texture: PPM and JPEG files load too (the fuzz corpus's formats)", "[ch08]") {
+    temp_folder dir("image_texture", "formats");
+    // A binary PPM (P6) of 2 x 1 texels: red, then gray 128.
+    write_bytes(dir.file("pair.ppm"), std::string("P6\n2 1\n255\n\xFF\x00\x00\x80\x80\x80", 17));
+    const rt::image_texture ppm(dir.file("pair.ppm"));
+    CHECK(close(at(ppm, 0.25, 0.5), decoded(255, 0, 0)));
+    CHECK(close(at(ppm, 0.75, 0.5), decoded(128, 128, 128)));
+    // A JPEG of one flat color: lossy, but a flat 8 x 8 block survives within a few codes.
+    std::vector<std::uint8_t> flat;
+    for (int i = 0; i < 8 * 8; ++i) flat.insert(flat.end(), {200, 100, 50});
+    REQUIRE(stbi_write_jpg(dir.file("flat.jpg").c_str(), 8, 8, 3, flat.data(), 100) != 0);
+    const rt::image_texture jpg(dir.file("flat.jpg"));
+    CHECK(jpg.width() == 8);
+    CHECK(jpg.height() == 8);
+    const color c = at(jpg, 0.5, 0.5);
+    CHECK(std::abs(rt::to_srgb8(double(c.x())) - 200) <= 3);
+    CHECK(std::abs(rt::to_srgb8(double(c.y())) - 100) <= 3);
+    CHECK(std::abs(rt::to_srgb8(double(c.z())) - 50) <= 3);
 }

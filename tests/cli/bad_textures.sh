@@ -1,0 +1,102 @@
+#!/usr/bin/env bash
+# Hostile texture files given to a chapter's --texture: each is refused with exit code 2, exactly
+# one line on stderr naming the file (and, for an enormous one, its size), and the existing
+# output file is left as it was, with nothing else in the folder.
+#   bad_textures.sh CHAPTER_EXE GOOD_TEXTURE.png [ARGS...]   (ARGS choose a scene with a texture)
+# The files are made here: cut copies of the good texture, and headers written by hand (python3)
+# that claim sizes far beyond the 2^26-texel limit in a few dozen bytes.
+set -uo pipefail
+exe=$1 good=$2
+shift 2
+scene_args=("$@")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+mkdir textures
+failures=0
+
+size=$(stat -c %s "$good")
+: >textures/empty.png
+head -c $((size / 2)) "$good" >textures/half.png
+head -c $((size - 12)) "$good" >textures/no_end.png  # only the 12-byte IEND chunk cut off
+head -c 20 "$good" >textures/header_only.png
+printf 'These are not the pixels you are looking for.\n' >textures/notes.png
+mkdir textures/folder.png
+python3 - <<'EOF'
+import struct, zlib
+
+def chunk(kind, data):
+    return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+
+def png(width, height, data=b""):
+    ihdr = struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)  # 8-bit RGB
+    idat = chunk(b"IDAT", zlib.compress(data)) if data else b""
+    return b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) + idat + chunk(b"IEND", b"")
+
+def jpeg(width, height):  # a start of frame (SOF0) with three components, and nothing else
+    return (b"\xff\xd8\xff\xc0\x00\x11\x08" + struct.pack(">HH", height, width) +
+            b"\x03\x01\x22\x00\x02\x11\x01\x03\x11\x01\xff\xd9")
+
+files = {
+    "huge.png": png(100000, 100000),
+    "wide.png": png(8193, 8192),  # one column more than 2^26 texels
+    "huge.jpg": jpeg(65535, 65535),
+    "big.jpg": jpeg(10000, 10000),
+    "huge.ppm": b"P6\n100000 100000\n255\n" + bytes(30),
+    # a valid header and a zlib stream that holds one row of the 4 x 4 image
+    "short_data.png": png(4, 4, b"\x00" + bytes(12)),
+}
+for name, data in files.items():
+    with open("textures/" + name, "wb") as f:
+        f.write(data)
+EOF
+
+# expect_refusal FILE TEXT...: --texture FILE is refused naming FILE and each TEXT.
+expect_refusal() {
+    local file=$1
+    shift
+    printf 'keep' >existing.png
+    "$exe" --quiet --width 8 --spp 1 "${scene_args[@]}" --texture "$file" --out existing.png \
+        >stdout.txt 2>stderr.txt
+    local rc=$?
+    local problem=""
+    [ "$rc" -eq 2 ] || problem+=" exit code $rc, not 2;"
+    [ "$(wc -l <stderr.txt)" -eq 1 ] || problem+=" $(wc -l <stderr.txt) lines on stderr, not 1;"
+    for text in "'$file'" "$@"; do
+        grep -qF -- "$text" stderr.txt || problem+=" message does not say \"$text\";"
+    done
+    [ "$(cat existing.png)" = "keep" ] || problem+=" existing.png was changed;"
+    local extra
+    extra=$(ls -A | grep -vxE 'existing.png|stdout.txt|stderr.txt|textures')
+    [ -z "$extra" ] || problem+=" left files: $extra;"
+    if [ -n "$problem" ]; then
+        echo "FAIL [$file]:$problem stderr: $(cat stderr.txt)"
+        failures=$((failures + 1))
+    else
+        echo "ok   [$file] -> $(cat stderr.txt)"
+    fi
+    rm -f stdout.txt stderr.txt
+}
+
+expect_refusal textures/missing.png "No such file or directory"
+expect_refusal textures/folder.png "is a folder"
+expect_refusal /dev/null "not a regular file"
+expect_refusal textures/empty.png "empty"
+expect_refusal textures/notes.png "not an image"
+expect_refusal textures/header_only.png "not an image"
+expect_refusal textures/half.png "damaged or truncated"
+expect_refusal textures/no_end.png "damaged or truncated"
+expect_refusal textures/short_data.png "damaged or truncated"
+expect_refusal textures/huge.png "at most 67108864 texels (2^26)" "got 100000 x 100000"
+expect_refusal textures/wide.png "at most 67108864 texels (2^26)" "got 8193 x 8192"
+expect_refusal textures/huge.jpg "at most 67108864 texels (2^26)" "got 65535 x 65535"
+expect_refusal textures/big.jpg "at most 67108864 texels (2^26)" "got 10000 x 10000"
+expect_refusal textures/huge.ppm "at most 67108864 texels (2^26)" "got 100000 x 100000"
+
+# The good texture itself renders: the refusals above are the files', not the command's.
+"$exe" --quiet --width 8 --spp 1 "${scene_args[@]}" --texture "$good" --out good.png ||
+    { echo "FAIL: the good texture $good was refused"; failures=$((failures + 1)); }
+rm -f good.png
+
+[ "$failures" -eq 0 ] || { echo "$failures bad textures not refused as they should be"; exit 1; }
+echo "all bad textures refused"
