@@ -34,6 +34,7 @@ class sky_only : public radiance_estimator {
     color radiance(const ray& r, sampler&, int) const override {
         return sky.radiance(r.direction());
     }
+    std::string_view name() const override { return "sky"; }
 
   private:
     background sky;

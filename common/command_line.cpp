@@ -2,11 +2,14 @@
 
 #include <omp.h>
 
+#include <charconv>
+#include <chrono>
 #include <cstdio>
 #include <exception>
 
 #include "error.h"
 #include "image_io.h"
+#include "run_stats.h"
 
 namespace rt {
 
@@ -25,16 +28,72 @@ CLI::Validator output_file(const std::vector<std::string>& extensions) {
         "FILE");
 }
 
+// Exactly `count` decimal integers separated by `separator`, and nothing else: "0,0,20,10" for
+// four and ','; not "0,0,20", "0,0,20,10," or " 0,0,20,10".
+bool parse_integers(const std::string& text, char separator, int count, int* out) {
+    const char* p   = text.data();
+    const char* end = text.data() + text.size();
+    for (int i = 0; i < count; ++i) {
+        if (i > 0) {
+            if (p == end || *p != separator) return false;
+            ++p;
+        }
+        auto [next, ec] = std::from_chars(p, end, out[i]);
+        if (ec != std::errc() || next == p) return false;
+        p = next;
+    }
+    return p == end;
+}
+
+std::optional<pixel_window> parse_crop(const std::string& text) {
+    int v[4];
+    if (!parse_integers(text, ',', 4, v)) return std::nullopt;
+    return pixel_window{v[0], v[1], v[2], v[3]};
+}
+
+std::optional<sample_range> parse_samples(const std::string& text) {
+    int v[2];
+    if (!parse_integers(text, ':', 2, v)) return std::nullopt;
+    return sample_range{v[0], v[1]};
+}
+
+// The syntax is checked while parsing; whether the values fit the image and the sample count
+// is known only once the scene is built (render.h: window_of, samples_of).
+CLI::Validator crop_syntax() {
+    return CLI::Validator(
+        [](std::string& text) -> std::string {
+            return parse_crop(text) ? "" : "crop must be X0,Y0,X1,Y1 (integers), got " + text;
+        },
+        "X0,Y0,X1,Y1");
+}
+
+CLI::Validator samples_syntax() {
+    return CLI::Validator(
+        [](std::string& text) -> std::string {
+            return parse_samples(text) ? ""
+                                       : "sample range must be FROM:TO (integers), got " + text;
+        },
+        "FROM:TO");
+}
+
+CLI::Validator stats_file() {
+    return CLI::Validator([](std::string& path) { return stats_path_problem(path); }, "FILE");
+}
+
 void print_summary(const std::string& name, const film& f, const render_settings& s,
-                   double seconds) {
-    double samples = double(f.width) * f.height * s.samples_per_pixel;
-    int threads    = s.threads > 0 ? s.threads : omp_get_num_procs();
+                   const render_result& r) {
+    std::string part;
+    if (s.crop)
+        part += ", crop " + std::to_string(r.window.x0) + "," + std::to_string(r.window.y0) + "," +
+                std::to_string(r.window.x1) + "," + std::to_string(r.window.y1);
+    if (s.samples)
+        part += ", samples " + std::to_string(r.samples.from) + ":" + std::to_string(r.samples.to);
     std::fprintf(stderr,
-                 "%s: %dx%d, %d spp, max depth %d, seed %llu, %d threads: %.3f s, %.3f M "
+                 "%s: %dx%d, %d spp, max depth %d, seed %llu%s, %d threads: %.3f s, %.3f M "
                  "samples/s\n",
                  name.c_str(), f.width, f.height, s.samples_per_pixel, s.max_depth,
-                 static_cast<unsigned long long>(s.seed), threads, seconds,
-                 samples / seconds * 1e-6);
+                 static_cast<unsigned long long>(s.seed), part.c_str(), r.threads, r.seconds,
+                 double(r.camera_samples()) / r.seconds * 1e-6);
 }
 
 }  // namespace
@@ -60,7 +119,19 @@ command_line::command_line(std::string program_name)
     cli.add_option("--variance-out", variance_output,
                    "Also write the variance of each pixel's mean, as .pfm")
         ->check(output_file({".pfm"}));
+    cli.add_option("--stats-out", stats_output,
+                   "Also write the record of the run (time, samples, rays, settings) as .json")
+        ->check(stats_file());
+    cli.add_option("--crop", crop_text,
+                   "Render only the pixels X0 <= x < X1, Y0 <= y < Y1 (from the top-left); the "
+                   "image is the window's size")
+        ->check(crop_syntax());
+    cli.add_option("--samples", samples_text,
+                   "Render only sample indices FROM <= k < TO of each pixel; --spp stays the "
+                   "whole render's count (TO <= spp)")
+        ->check(samples_syntax());
     cli.add_flag("--quiet", flags.quiet, "No progress or summary on stderr");
+    for (const CLI::Option* option : cli.get_options()) shared_options.push_back(option);
 }
 
 render_settings command_line::with_flags(render_settings s) const {
@@ -71,10 +142,30 @@ render_settings command_line::with_flags(render_settings s) const {
     if (given("--seed")) s.seed = flags.seed;
     if (given("--threads")) s.threads = flags.threads;
     if (given("--quiet")) s.quiet = flags.quiet;
+    if (given("--crop")) s.crop = parse_crop(crop_text);
+    if (given("--samples")) s.samples = parse_samples(samples_text);
     return s;
 }
 
+std::vector<std::pair<std::string, std::string>> command_line::chapter_options() const {
+    std::vector<std::pair<std::string, std::string>> options;
+    for (const CLI::Option* option : cli.get_options()) {
+        if (std::find(shared_options.begin(), shared_options.end(), option) != shared_options.end())
+            continue;
+        std::string value;
+        if (option->count() > 0) {
+            for (const auto& result : option->results())
+                value += (value.empty() ? "" : " ") + result;
+        } else {
+            value = option->get_default_str();
+        }
+        options.emplace_back(option->get_name(), value);
+    }
+    return options;
+}
+
 int command_line::run(int argc, char** argv, const std::function<render_job()>& build) {
+    const auto start = std::chrono::steady_clock::now();
     try {
         cli.parse(argc, argv);
     } catch (const CLI::CallForHelp&) {
@@ -94,7 +185,28 @@ int command_line::run(int argc, char** argv, const std::function<render_job()>& 
         render_result result = render(f, *job.cam, *job.estimator, setting);
         for (const auto& path : outputs) write_image(path, result.mean);
         if (!variance_output.empty()) write_image(variance_output, result.mean_variance);
-        if (!setting.quiet) print_summary(program, f, setting, result.seconds);
+        if (!stats_output.empty()) {
+            // Written last: a stats file means every image of the run is complete.
+            run_stats stats{program,
+                            std::string(job.estimator->name()),
+                            "independent",  // the one sampler so far (sampler.h)
+                            chapter_options(),
+                            std::vector<std::string>(argv, argv + argc),
+                            f,
+                            setting,
+                            result.window,
+                            result.samples,
+                            result.rays,
+                            result.seconds,
+                            0,
+                            outputs,
+                            variance_output};
+            stats.settings.threads = result.threads;
+            stats.process_seconds =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            write_stats(stats_output, stats);
+        }
+        if (!setting.quiet) print_summary(program, f, setting, result);
         return 0;
     } catch (const user_error& e) {
         std::fprintf(stderr, "%s: error: %s\n", program.c_str(), e.what());

@@ -1,6 +1,7 @@
 // The command line every chapter shares (CLI11). Chapter 01.
 //   chNN_name [--width N] [--spp N] [--max-depth N] [--seed N] [--threads N] [--out FILE]...
-//             [--variance-out FILE] [--quiet] [--help]
+//             [--variance-out FILE] [--stats-out FILE] [--crop X0,Y0,X1,Y1]
+//             [--samples FROM:TO] [--quiet] [--help]
 // It only parses: the scene brings its own default settings (render_job::settings) and a flag
 // the user gives overrides that one setting. A chapter may add flags of its own through app().
 #pragma once
@@ -8,6 +9,7 @@
 #include <CLI/CLI.hpp>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "render.h"
@@ -30,11 +32,18 @@ class command_line {
     // The job's settings with every flag the user gave put over them.
     render_settings with_flags(render_settings scene_defaults) const;
 
+    // The chapter's own flags (those it added through app()) and their values in force.
+    std::vector<std::pair<std::string, std::string>> chapter_options() const;
+
     std::string program;
     render_settings flags;             // the values parsed; only those given are used
     std::vector<std::string> outputs;  // .png and/or .pfm files; default "<name>.png"
     std::string variance_output;       // optional .pfm of the per-pixel variance of the mean
+    std::string stats_output;          // optional .json record of the run (run_stats.h)
+    std::string crop_text;             // --crop as given, checked by the parser
+    std::string samples_text;          // --samples as given, checked by the parser
     CLI::App cli;
+    std::vector<const CLI::Option*> shared_options;  // the flags every chapter has
 };
 
 }  // namespace rt

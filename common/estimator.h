@@ -3,6 +3,8 @@
 // 01), the normals of the nearest hit (chapter 02), the path tracer (chapter 03 on).
 #pragma once
 
+#include <string_view>
+
 #include "ray.h"
 #include "sampler.h"
 
@@ -15,6 +17,10 @@ class radiance_estimator {
     // Radiance arriving at the camera along r (towards its origin), drawing any random numbers
     // from s; a path follows at most max_depth ray segments. Must be finite and >= 0.
     virtual color radiance(const ray& r, sampler& s, int max_depth) const = 0;
+
+    // A short name of the method ("sky", "normals", "path"), for the record of a run
+    // (--stats-out) and so for the tools that compare methods.
+    virtual std::string_view name() const = 0;
 };
 
 }  // namespace rt

@@ -1,6 +1,7 @@
 #include "path_tracer.h"
 
 #include "material.h"
+#include "ray_count.h"
 #include "validate.h"
 
 namespace rt {
@@ -16,6 +17,7 @@ color path_tracer::radiance(const ray& camera_ray, sampler& s, int max_depth) co
     color throughput(1, 1, 1);  // product of the attenuations along the path so far
     for (int segment = 0; segment < max_depth; ++segment) {
         hit_record rec;
+        count_ray();
         // Spawned rays start off their surface (hit_record::spawn_ray), so any t > 0 is a real hit.
         if (!world->hit(r, interval(0, infinity), rec)) {
             radiance += throughput * sky.radiance(r.direction());

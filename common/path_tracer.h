@@ -16,6 +16,7 @@ class path_tracer : public radiance_estimator {
 
     // Draws, per path segment, whatever the material hit draws (material.h); nothing else.
     color radiance(const ray& r, sampler& s, int max_depth) const override;
+    std::string_view name() const override { return "path"; }
 
   private:
     std::shared_ptr<const hittable> world;

@@ -1,5 +1,6 @@
 #include "show_normals.h"
 
+#include "ray_count.h"
 #include "validate.h"
 
 namespace rt {
@@ -11,6 +12,7 @@ normals_estimator::normals_estimator(std::shared_ptr<const hittable> w, const ba
 
 color normals_estimator::radiance(const ray& r, sampler&, int) const {
     hit_record rec;
+    count_ray();
     if (!world->hit(r, interval(0, infinity), rec)) return sky.radiance(r.direction());
     vec3 outward = rec.front_face ? rec.normal : -rec.normal;
     return real(0.5) * (outward + color(1, 1, 1));

@@ -13,6 +13,7 @@ class normals_estimator : public radiance_estimator {
 
     // Draws nothing from s: one segment, no random choice.
     color radiance(const ray& r, sampler& s, int max_depth) const override;
+    std::string_view name() const override { return "normals"; }
 
   private:
     std::shared_ptr<const hittable> world;

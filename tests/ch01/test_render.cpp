@@ -27,6 +27,7 @@ class noisy_sky : public rt::radiance_estimator {
     color radiance(const rt::ray& r, rt::sampler& s, int) const override {
         return (real(0.5) + s.next_1d()) * sky.radiance(r.direction());
     }
+    std::string_view name() const override { return "noisy sky"; }
 
   private:
     rt::background sky = rt::background::sky();
