@@ -1,0 +1,75 @@
+#include "anchor_geometry.h"
+
+#include "ch06_defocus/random_spheres.h"
+#include "common/box.h"
+#include "common/instance.h"
+#include "common/lambertian.h"
+#include "single_precision.h"
+
+namespace rt_bench {
+
+void anchor_geometry::add(const rt::sphere& s) {
+    spheres.push_back({to_float(s.center()), to_float(s.radius())});
+}
+
+void anchor_geometry::add(const rt::quad& q) {
+    quads.push_back({to_float(q.corner()), to_float(q.edge_u()), to_float(q.edge_v())});
+}
+
+std::vector<rt::bounded_object> anchor_geometry::objects() const {
+    // Materials play no part in finding hits; one for all.
+    auto gray = std::make_shared<rt::lambertian>(rt::color(0.5, 0.5, 0.5));
+    std::vector<rt::bounded_object> out;
+    for (const auto& s : spheres)
+        out.emplace_back(std::make_shared<rt::sphere>(s.center, s.radius, gray));
+    for (const auto& q : quads)
+        out.emplace_back(std::make_shared<rt::quad>(q.corner, q.u, q.v, gray));
+    return out;
+}
+
+anchor_geometry book1_geometry() {
+    anchor_geometry g;
+    for (const auto& s : random_spheres()) g.add(*s);
+    return g;
+}
+
+anchor_geometry book2_final_geometry() {
+    // The numbers of book2_final_scene(), in the order it draws its random numbers; that
+    // function builds a scene whose BVH does not show its shapes, so they are repeated here
+    // (the anchor checks them against the real scene: embree_anchor.cpp).
+    using rt::point3, rt::vec3;
+    anchor_geometry g;
+    rt::pcg32 rng(/*sequence=*/13, /*seed=*/2024);
+    auto ground = std::make_shared<rt::lambertian>(rt::color(0.48, 0.83, 0.53));
+    for (int i = 0; i < 20; ++i) {
+        for (int j = 0; j < 20; ++j) {
+            double x0 = -1000.0 + i * 100.0, z0 = -1000.0 + j * 100.0;
+            double y1 = 1 + 100 * rng.uniform();
+            for (const auto& face :
+                 rt::box_faces(point3(x0, 0, z0), point3(x0 + 100, y1, z0 + 100), ground))
+                g.add(dynamic_cast<const rt::quad&>(*face.object));
+        }
+    }
+    g.add(rt::quad(point3(123, 554, 147), vec3(300, 0, 0), vec3(0, 0, 265), ground));
+
+    g.add(rt::sphere(point3(400, 400, 200), 50));  // the moving sphere at time 0
+    g.add(rt::sphere(point3(260, 150, 45), 50));
+    g.add(rt::sphere(point3(0, 150, 145), 50));
+    g.add(rt::sphere(point3(360, 150, 145), 70));  // the glass ball around the blue medium
+    g.add(rt::sphere(point3(400, 200, 400), 100));
+    g.add(rt::sphere(point3(220, 280, 300), 80));
+
+    // The cluster: turned 15 degrees about y, then moved; its spheres' centers go along.
+    const rt::rotate turn(std::make_shared<rt::sphere>(point3(0, 0, 0), 1), rt::axis::y, 15);
+    const vec3 offset(-100, 270, 395);
+    for (int k = 0; k < 1000; ++k) {
+        double x = 165 * rng.uniform(), y = 165 * rng.uniform(), z = 165 * rng.uniform();
+        g.add(rt::sphere(turn.to_world(point3(x, y, z)) + offset, 10));
+    }
+    g.left_out =
+        "the blue medium in the glass ball and the mist (media: no surface); the cluster's "
+        "instance is flattened into 1000 world-space spheres";
+    return g;
+}
+
+}  // namespace rt_bench
