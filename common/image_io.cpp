@@ -15,6 +15,7 @@
 
 #include "display_encoding.h"
 #include "error.h"
+#include "interrupt.h"
 
 namespace rt {
 
@@ -30,6 +31,7 @@ std::string extension_of(const std::string& path) {
 void write_atomically(const std::string& path,
                       const std::function<bool(const std::string&)>& write) {
     std::string tmp = path + ".tmp." + std::to_string(::getpid());
+    removed_on_interrupt interrupted(tmp);  // Ctrl-C or kill now leaves the old file, no tmp
     if (!write(tmp)) {
         std::remove(tmp.c_str());
         throw user_error("cannot write '" + path + "'");
