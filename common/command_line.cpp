@@ -164,8 +164,7 @@ std::vector<std::pair<std::string, std::string>> command_line::chapter_options()
     return options;
 }
 
-int command_line::run(int argc, char** argv, const std::function<render_job()>& build) {
-    const auto start = std::chrono::steady_clock::now();
+std::optional<int> command_line::parse(int argc, char** argv) {
     try {
         cli.parse(argc, argv);
     } catch (const CLI::CallForHelp&) {
@@ -176,6 +175,12 @@ int command_line::run(int argc, char** argv, const std::function<render_job()>& 
         return 2;
     }
     if (outputs.empty()) outputs.push_back(program + ".png");
+    return std::nullopt;
+}
+
+int command_line::run(int argc, char** argv, const std::function<render_job()>& build) {
+    const auto start = std::chrono::steady_clock::now();
+    if (auto stop = parse(argc, argv)) return *stop;
 
     try {
         render_job job          = build();

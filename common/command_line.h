@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -27,6 +28,11 @@ class command_line {
     // the flags given over the job's settings, renders and writes every output. Returns the exit
     // code: 0 on success (or --help), 2 for a user error with one line on stderr naming it.
     int run(int argc, char** argv, const std::function<render_job()>& build);
+
+    // run()'s first step alone: parses and checks the arguments, builds and renders nothing.
+    // Returns the exit code to stop with (0 after --help, 2 after one line on stderr naming the
+    // error), or nothing when run() would go on. The fuzz target of the command line calls it.
+    std::optional<int> parse(int argc, char** argv);
 
   private:
     // The job's settings with every flag the user gave put over them.
