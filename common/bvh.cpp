@@ -175,6 +175,36 @@ bool bvh::hit(const ray& r, interval ray_t, hit_record& rec) const {
     return hit_anything;
 }
 
+// [ch14 begin]
+real bvh::transmittance(const ray& r, interval ray_t) const {
+    if (nodes.empty()) return 1;
+    const vec3& d = r.direction();
+    const vec3 inv_dir(1 / d.x(), 1 / d.y(), 1 / d.z());
+    std::uint32_t stack[max_traversal_depth];
+    int top               = 0;
+    std::uint32_t current = 0;
+    real fraction         = 1;
+    while (true) {
+        const node& n = nodes[current];
+        if (n.box.hit(r.origin(), inv_dir, ray_t)) {
+            if (n.count > 0) {
+                for (std::uint32_t i = n.offset; i < n.offset + n.count; ++i) {
+                    fraction *= leaf_objects[i]->transmittance(r, ray_t);
+                    if (fraction == 0) return 0;
+                }
+            } else {
+                stack[top++] = n.offset;
+                current      = current + 1;
+                continue;
+            }
+        }
+        if (top == 0) break;
+        current = stack[--top];
+    }
+    return fraction;
+}
+// [ch14 end]
+
 aabb bvh::bounding_box() const {
     return nodes.empty() ? aabb() : nodes[0].box;
 }

@@ -24,6 +24,15 @@ class bvh : public bounded_hittable {
     bool hit(const ray& r, interval ray_t, hit_record& rec) const override;
     aabb bounding_box() const override;
 
+    // [ch14 begin]
+    // Every leaf the ray's box test lets through, not only the nearest: a medium in front of
+    // a blocker still counts, and any blocker ends the search.
+    real transmittance(const ray& r, interval ray_t) const override;
+    void visit_parts(part_visitor& visitor) const override {
+        for (const auto* object : leaf_objects) visitor.visit(*object);
+    }
+    // [ch14 end]
+
     std::size_t node_count() const { return nodes.size(); }
     std::size_t object_count() const { return objects.size(); }
     int depth() const;

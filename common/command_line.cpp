@@ -96,6 +96,14 @@ void print_summary(const std::string& name, const film& f, const render_settings
                  double(r.camera_samples()) / r.seconds * 1e-6);
 }
 
+// [ch16 begin]
+// The name of the sampler the settings choose (chapter 01's independent one unless a later
+// chapter's program chose another).
+std::string sampler_name(const render_settings& s) {
+    return s.make_sampler ? s.make_sampler(s.seed)->name() : sampler(s.seed).name();
+}
+// [ch16 end]
+
 }  // namespace
 
 command_line::command_line(std::string program_name)
@@ -194,7 +202,7 @@ int command_line::run(int argc, char** argv, const std::function<render_job()>& 
             // Written last: a stats file means every image of the run is complete.
             run_stats stats{program,
                             std::string(job.estimator->name()),
-                            "independent",  // the one sampler so far (sampler.h)
+                            sampler_name(setting),
                             chapter_options(),
                             std::vector<std::string>(argv, argv + argc),
                             f,

@@ -25,15 +25,20 @@ constant_medium::constant_medium(const bounded_object& b, real density,
                                  hash_values(bits_of(box.x.max), bits_of(box.y.max), bits_of(box.z.max)));
 }
 
-bool constant_medium::hit(const ray& r, interval ray_t, hit_record& rec) const {
+bool constant_medium::inside_stretch(const ray& r, interval ray_t, real& t_in, real& t_out) const {
     hit_record entry, exit;
     if (!boundary->hit(r, interval::universe(), entry)) return false;
     if (!boundary->hit(r, interval(entry.t, infinity), exit)) return false;
 
     // Nothing behind the ray's origin counts, whatever interval the caller passes.
-    real t_in  = std::fmax(entry.t, std::fmax(ray_t.min, real(0)));
-    real t_out = std::fmin(exit.t, ray_t.max);
-    if (!(t_in < t_out)) return false;
+    t_in  = std::fmax(entry.t, std::fmax(ray_t.min, real(0)));
+    t_out = std::fmin(exit.t, ray_t.max);
+    return t_in < t_out;
+}
+
+bool constant_medium::hit(const ray& r, interval ray_t, hit_record& rec) const {
+    real t_in = 0, t_out = 0;
+    if (!inside_stretch(r, ray_t, t_in, t_out)) return false;
 
     const real speed    = r.direction().length();
     const real inside   = (t_out - t_in) * speed;
@@ -49,6 +54,14 @@ bool constant_medium::hit(const ray& r, interval ray_t, hit_record& rec) const {
     rec.object     = this;  // no surface: (u, v) = (0, 0)
     return true;
 }
+
+// [ch14 begin]
+real constant_medium::transmittance(const ray& r, interval ray_t) const {
+    real t_in = 0, t_out = 0;
+    if (!inside_stretch(r, ray_t, t_in, t_out)) return 1;
+    return std::exp((t_out - t_in) * r.direction().length() / neg_inv_density);
+}
+// [ch14 end]
 
 real constant_medium::random_for(const ray& r) const {
     const point3& o = r.origin();

@@ -36,10 +36,19 @@ class constant_medium : public bounded_hittable {
     bool hit(const ray& r, interval ray_t, hit_record& rec) const override;
     aabb bounding_box() const override { return box; }
 
+    // [ch14 begin]
+    // exp(-density * length of r's path inside the boundary within ray_t): the probability that
+    // hit() lets the ray through, given exactly rather than drawn.
+    real transmittance(const ray& r, interval ray_t) const override;
+    // [ch14 end]
+
     // The uniform number in (0, 1] this medium draws for ray r.
     real random_for(const ray& r) const;
 
   private:
+    // The stretch [t_in, t_out) of r inside the boundary and within ray_t; false if none.
+    bool inside_stretch(const ray& r, interval ray_t, real& t_in, real& t_out) const;
+
     std::shared_ptr<hittable> boundary;
     aabb box;
     real neg_inv_density;

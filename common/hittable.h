@@ -67,6 +67,17 @@ struct hit_record {
     // [ch03 end]
 };
 
+// [ch14 begin]
+// Something that wants to see the parts of a composite object (finding a scene's lights).
+class part_visitor {
+  public:
+    virtual void visit(const hittable& part) = 0;
+
+  protected:
+    ~part_visitor() = default;
+};
+// [ch14 end]
+
 class hittable {
   public:
     virtual ~hittable() = default;
@@ -80,6 +91,20 @@ class hittable {
     // no surface (a medium) have none: (0, 0).
     virtual surface_uv uv_at(const vec3& /*local*/) const { return {}; }
     // [ch08 end]
+
+    // [ch14 begin]
+    // The fraction of light that travels along r through ray_t unscattered: 0 when a surface is
+    // in the way, exp(-density * length) through a medium (constant_medium), the product over
+    // the parts of a composite. A shadow ray asks this instead of hit(): any blocker ends it,
+    // no nearest hit is needed, and a medium attenuates exactly instead of by a random hit.
+    virtual real transmittance(const ray& r, interval ray_t) const {
+        hit_record rec;
+        return hit(r, ray_t, rec) ? 0 : 1;
+    }
+    // Shows visitor the objects this one holds directly (a list's members, a BVH's leaves).
+    // Shapes, instances and media hold none that a light search should see.
+    virtual void visit_parts(part_visitor& /*visitor*/) const {}
+    // [ch14 end]
 };
 
 // [ch08 begin]

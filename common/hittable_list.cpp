@@ -13,4 +13,15 @@ bool hittable_list::hit(const ray& r, interval ray_t, hit_record& rec) const {
     return hit_anything;
 }
 
+// [ch14 begin]
+real hittable_list::transmittance(const ray& r, interval ray_t) const {
+    real fraction = 1;
+    for (const auto& object : objects) {
+        fraction *= object->transmittance(r, ray_t);
+        if (fraction == 0) break;
+    }
+    return fraction;
+}
+// [ch14 end]
+
 }  // namespace rt

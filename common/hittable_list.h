@@ -18,6 +18,13 @@ class hittable_list : public hittable {
 
     // Each object is asked only for hits nearer than the nearest found so far.
     bool hit(const ray& r, interval ray_t, hit_record& rec) const override;
+
+    // [ch14 begin]
+    real transmittance(const ray& r, interval ray_t) const override;
+    void visit_parts(part_visitor& visitor) const override {
+        for (const auto& object : objects) visitor.visit(*object);
+    }
+    // [ch14 end]
 };
 
 }  // namespace rt

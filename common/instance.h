@@ -18,6 +18,11 @@ class translate : public bounded_hittable {
 
     bool hit(const ray& r, interval ray_t, hit_record& rec) const override;
     aabb bounding_box() const override { return box; }
+    // [ch14 begin]
+    real transmittance(const ray& r, interval ray_t) const override {
+        return object->transmittance(r.continued(r.origin() - offset, r.direction()), ray_t);
+    }
+    // [ch14 end]
 
   private:
     std::shared_ptr<hittable> object;
@@ -38,6 +43,12 @@ class rotate : public bounded_hittable {
 
     bool hit(const ray& r, interval ray_t, hit_record& rec) const override;
     aabb bounding_box() const override { return box; }
+    // [ch14 begin]
+    real transmittance(const ray& r, interval ray_t) const override {
+        return object->transmittance(r.continued(to_object(r.origin()), to_object(r.direction())),
+                                     ray_t);
+    }
+    // [ch14 end]
 
     // The rotation itself (object to world) and its inverse, for tests and for hit().
     vec3 to_world(const vec3& v) const { return turn(v, sin_theta); }

@@ -20,4 +20,14 @@ bool isotropic::scatter(const ray& r_in, const hit_record& rec, sampler& s, colo
     return true;
 }
 
+// [ch14 begin]
+color isotropic::eval(const ray&, const hit_record& rec, const vec3&) const {
+    return albedo->value_at(rec) * uniform_sphere_pdf();
+}
+
+real isotropic::pdf(const ray&, const hit_record&, const vec3&) const {
+    return uniform_sphere_pdf();
+}
+// [ch14 end]
+
 }  // namespace rt

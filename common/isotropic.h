@@ -18,6 +18,13 @@ class isotropic : public material {
     bool scatter(const ray& r_in, const hit_record& rec, sampler& s, color& attenuation,
                  ray& scattered) const override;
 
+    // [ch14 begin]
+    // Every direction alike: f = albedo / (4 pi), no cosine (a medium has no surface).
+    bool evaluable() const override { return true; }
+    color eval(const ray& r_in, const hit_record& rec, const vec3& wi) const override;
+    real pdf(const ray& r_in, const hit_record& rec, const vec3& wi) const override;
+    // [ch14 end]
+
   private:
     std::shared_ptr<texture> albedo;
 };

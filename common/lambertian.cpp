@@ -13,6 +13,12 @@ ray scatter_diffuse(const ray& r_in, const hit_record& rec, sampler& s) {
     return rec.spawn_reflected_ray(r_in, direction);
 }
 
+// [ch14 begin]
+real diffuse_cosine_pdf(const hit_record& rec, const vec3& wi) {
+    return cosine_hemisphere_pdf(dot(rec.normal, wi));
+}
+// [ch14 end]
+
 lambertian::lambertian(const color& a) : albedo_(a) {
     require_reflectance(a, "lambertian albedo");
 }

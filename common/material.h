@@ -23,6 +23,23 @@ class material {
     // attenuation = f * |cos theta| / pdf, the pdf taken with respect to solid angle.
     virtual bool scatter(const ray& r_in, const hit_record& rec, sampler& s, color& attenuation,
                          ray& scattered) const = 0;
+
+    // [ch14 begin]
+    // What importance sampling needs beyond scatter(): the scattering function's value for a
+    // direction the material did not choose. Only materials whose scatter() draws from a density
+    // we can write down answer (lambertian, isotropic); a mirror's or glass's direction is a
+    // delta, and metal's fuzz has no density, so those keep evaluable() false and are only
+    // sampled: no light sample and no MIS weight at them.
+    virtual bool evaluable() const { return false; }
+    // f(wo, wi) |cos theta_i| towards unit wi (for a medium: the phase function times albedo).
+    virtual color eval(const ray& /*r_in*/, const hit_record& /*rec*/, const vec3& /*wi*/) const {
+        return color();
+    }
+    // The solid-angle density with which scatter() draws unit wi.
+    virtual real pdf(const ray& /*r_in*/, const hit_record& /*rec*/, const vec3& /*wi*/) const {
+        return 0;
+    }
+    // [ch14 end]
 };
 
 }  // namespace rt

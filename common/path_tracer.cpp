@@ -24,6 +24,7 @@ color path_tracer::radiance(const ray& camera_ray, sampler& s, int max_depth) co
             break;
         }
         radiance += throughput * rec.mat->emitted(r, rec);  // [ch10]
+        s.start_segment(segment);                           // [ch16] the layout of sampler.h
         color attenuation;
         ray scattered;
         if (!rec.mat->scatter(r, rec, s, attenuation, scattered)) break;

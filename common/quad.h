@@ -26,6 +26,7 @@ class quad : public hittable {
     const point3& corner() const { return Q; }
     const vec3& edge_u() const { return u; }
     const vec3& edge_v() const { return v; }
+    const std::shared_ptr<material>& surface() const { return mat; }  // [ch14]
 
   private:
     point3 Q;

@@ -58,7 +58,12 @@ render_result render(const film& f, const camera& cam, const radiance_estimator&
 #pragma omp for schedule(dynamic, 1)
         for (int row = 0; row < height; ++row) {
             const int j = window.y0 + row;
-            sampler s(settings.seed);
+            sampler independent(settings.seed);
+            // [ch16 begin]
+            std::unique_ptr<sampler> chosen;
+            if (settings.make_sampler) chosen = settings.make_sampler(settings.seed);
+            // [ch16 end]
+            sampler& s = chosen ? *chosen : independent;  // [ch16]
             for (int col = 0; col < width; ++col) {
                 const int i = window.x0 + col;
                 // Welford's running mean and sum of squared deviations m2, in double: the order

@@ -45,6 +45,11 @@ struct render_settings {
     // One part of a split render (none: the whole image, every sample index).
     std::optional<pixel_window> crop;     // Render only this window; the image is its size
     std::optional<sample_range> samples;  // Only these sample indices; to <= samples_per_pixel
+    // [ch16 begin]
+    // Where pixel samples take their numbers: null is chapter 01's independent sampler; chapter
+    // 16 offers Sobol' points (sobol_sampler.h).
+    std::unique_ptr<sampler> (*make_sampler)(std::uint64_t seed) = nullptr;
+    // [ch16 end]
 };
 
 // Everything a chapter's program renders: how the camera looks, how a sample is estimated, and

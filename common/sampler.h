@@ -29,18 +29,37 @@ class sampler {
     static constexpr std::uint64_t dimensions_per_sample = 65536;
 
     explicit sampler(std::uint64_t render_seed) : seed(render_seed) {}
+    virtual ~sampler() = default;  // [ch16]
 
-    void start_pixel_sample(int px, int py, int sample_index) {
+    // [ch16] virtual: chapter 16's sobol_sampler draws the same dimensions from Sobol' points.
+    virtual void start_pixel_sample(int px, int py, int sample_index) {
         auto pixel = (std::uint64_t(std::uint32_t(px)) << 32u) | std::uint32_t(py);
         rng.set_sequence(hash_values(pixel, seed, 0), mix_bits(seed));
         rng.advance(std::uint64_t(sample_index) * dimensions_per_sample);
+        draw = 0;  // [ch16]
     }
 
-    real next_1d() { return rng.uniform(); }
-    sample2 next_2d() {
+    virtual real next_1d() { return rng.uniform(); }  // [ch16] virtual
+    virtual sample2 next_2d() {                       // [ch16] virtual
         real u = rng.uniform();
         return {u, rng.uniform()};
     }
+
+    // [ch16 begin]
+    // What kind of numbers these are, for the record of a run (--stats-out).
+    virtual const char* name() const { return "independent"; }
+
+    // The layout of a path's draws, for samplers whose numbers depend on which draw they are
+    // (chapter 16's Sobol' points): the camera's draws come first (at most 4: jitter, lens,
+    // instant), then path segment k's start at draw 4 + 8 k, whatever the segments before it
+    // drew. So draw j of segment k means the same thing in every sample of a pixel, and its
+    // points stay evenly spread. Independent numbers need no layout: this sampler ignores it.
+    static constexpr int camera_draws = 4, draws_per_segment = 8;
+    void start_segment(int segment) { draw = camera_draws + segment * draws_per_segment; }
+    // [ch16 end]
+
+  protected:
+    int draw = 0;  // [ch16] the next draw's place in the layout (start_segment)
 
   private:
     std::uint64_t seed;

@@ -18,6 +18,16 @@ class textured_lambertian : public material {
     bool scatter(const ray& r_in, const hit_record& rec, sampler& s, color& attenuation,
                  ray& scattered) const override;
 
+    // [ch14 begin]
+    bool evaluable() const override { return true; }
+    color eval(const ray&, const hit_record& rec, const vec3& wi) const override {
+        return albedo->value_at(rec) * diffuse_cosine_pdf(rec, wi);
+    }
+    real pdf(const ray&, const hit_record& rec, const vec3& wi) const override {
+        return diffuse_cosine_pdf(rec, wi);
+    }
+    // [ch14 end]
+
   private:
     std::shared_ptr<texture> albedo;
 };
