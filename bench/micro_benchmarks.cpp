@@ -33,8 +33,8 @@ std::vector<rt::ray> rays_towards(Target target) {
 }
 
 // A point of the plane z = -4 at a distance from the z axis uniform in [r0, r1).
-rt::point3 ring_point(rt::pcg32& rng, rt::real r0, rt::real r1) {
-    rt::real r = r0 + (r1 - r0) * rng.uniform(), phi = 2 * rt::pi * rng.uniform();
+rt::point3 ring_point(rt::pcg32& rng, double r0, double r1) {
+    double r = r0 + (r1 - r0) * double(rng.uniform()), phi = 2 * rt::pi * double(rng.uniform());
     return rt::point3(r * std::cos(phi), r * std::sin(phi), -4);
 }
 

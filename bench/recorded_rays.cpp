@@ -86,7 +86,9 @@ recorded_rays record_rays(const rt::scene& sc, int samples_per_pixel, std::size_
         rt::hit_record rec;
         bool on_surface = sc.world->hit(r, rt::interval(0, rt::infinity), rec) &&
                           dynamic_cast<const rt::isotropic*>(rec.mat) == nullptr;
-        out.surface_hits.push_back(on_surface ? rec.p : rt::point3(nan, nan, nan));
+        out.surface_hits.push_back(
+            on_surface ? recorded_rays::surface_hit{rec.p, float_spawn_offset(rec.p_error)}
+                       : recorded_rays::surface_hit{rt::point3(nan, nan, nan), 0});
     }
     return out;
 }

@@ -13,9 +13,14 @@ struct recorded_rays {
     // Rounded to float; a spawned ray's origin is moved off its surface by the float build's
     // offset instead of this build's (single_precision.h), on the same side.
     std::vector<rt::ray> rays;
-    // Where the real scene's nearest hit along each of these rays lies when it is on a surface;
-    // NaN for a miss or a scattering event in a medium. To check a copy of the scene's shapes.
-    std::vector<rt::point3> surface_hits;
+    // The real scene's nearest hit along each of these rays when it is on a surface (p NaN for
+    // a miss or a scattering event in a medium), to check a copy of the scene's shapes: the
+    // point and the float build's bound on its error (single_precision.h).
+    struct surface_hit {
+        rt::point3 p;
+        rt::real error = 0;
+    };
+    std::vector<surface_hit> surface_hits;
     std::size_t recorded  = 0;  // rays the render traced, before thinning to `rays`
     std::size_t respawned = 0;  // of those, spawned from a hit (the origin re-offset)
 };
