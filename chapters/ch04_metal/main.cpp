@@ -1,35 +1,9 @@
 // Chapter 04: metal. A polished metal reflects a ray as a mirror, r = v - 2 (v.n) n; a brushed
 // one moves the reflected direction by up to `fuzz` inside a ball, blurring the reflection.
 // A fuzzed ray that ends up below the surface is absorbed.
-#include <memory>
-
 #include "common/command_line.h"
-#include "common/hittable_list.h"
-#include "common/lambertian.h"
-#include "common/metal.h"
 #include "common/path_tracer.h"
-#include "common/sphere.h"
-
-// Book 1's metal scene: a matte sphere between a polished and a fully fuzzy metal sphere.
-rt::scene metal_spheres() {
-    using rt::color, rt::point3;
-    auto ground   = std::make_shared<rt::lambertian>(color(0.8, 0.8, 0.0));
-    auto center   = std::make_shared<rt::lambertian>(color(0.1, 0.2, 0.5));
-    auto polished = std::make_shared<rt::metal>(color(0.8, 0.8, 0.8), 0.3);
-    auto brushed  = std::make_shared<rt::metal>(color(0.8, 0.6, 0.2), 1.0);
-
-    auto world = std::make_shared<rt::hittable_list>();
-    world->add(std::make_shared<rt::sphere>(point3(0, -100.5, -1), 100, ground));
-    world->add(std::make_shared<rt::sphere>(point3(0, 0, -1), 0.5, center));
-    world->add(std::make_shared<rt::sphere>(point3(-1, 0, -1), 0.5, polished));
-    world->add(std::make_shared<rt::sphere>(point3(1, 0, -1), 0.5, brushed));
-
-    rt::scene scene;
-    scene.world = world;
-    // The default sky and camera: at the origin looking down -z, vfov 90, 16:9.
-    scene.settings = {.width = 400, .samples_per_pixel = 100, .max_depth = 50};
-    return scene;
-}
+#include "metal_scene.h"
 
 int main(int argc, char** argv) {
     return rt::command_line("ch04_metal").run(argc, argv, [] {

@@ -1,6 +1,8 @@
 // Book 1's glass scene, shared by chapter 05 (seen from the origin) and chapter 06 (seen through
 // a positionable thin-lens camera): a hollow glass sphere (an air bubble of index ratio 1/1.5
 // inside glass of index 1.5), a matte sphere and a mirror-polished metal sphere on the ground.
+// Chapter 05's report scene, glass_scene_from_origin(), is here too: --scene ch05 of later
+// chapters' programs.
 #pragma once
 
 #include <memory>
@@ -9,6 +11,7 @@
 #include "common/hittable_list.h"
 #include "common/lambertian.h"
 #include "common/metal.h"
+#include "common/scene.h"
 #include "common/sphere.h"
 
 inline std::shared_ptr<rt::hittable_list> glass_with_bubble() {
@@ -26,4 +29,13 @@ inline std::shared_ptr<rt::hittable_list> glass_with_bubble() {
     world->add(std::make_shared<rt::sphere>(point3(-1, 0, -1), 0.4, bubble));
     world->add(std::make_shared<rt::sphere>(point3(1, 0, -1), 0.5, mirror));
     return world;
+}
+
+// The glass sphere with its air bubble, seen from the origin down -z.
+inline rt::scene glass_scene_from_origin() {
+    rt::scene scene;
+    scene.world = glass_with_bubble();
+    // The default sky and camera: at the origin looking down -z, vfov 90, 16:9.
+    scene.settings = {.width = 400, .samples_per_pixel = 100, .max_depth = 50};
+    return scene;
 }

@@ -1,0 +1,36 @@
+// Chapter 03's report scene: three matte spheres and a small one on a finite floor under the
+// default sky, seen by the default camera. Later chapters' programs render it as --scene ch03.
+#pragma once
+
+#include <memory>
+
+#include "common/hittable_list.h"
+#include "common/lambertian.h"
+#include "common/quad.h"
+#include "common/scene.h"
+#include "common/sphere.h"
+
+// Three matte spheres and a small one on a finite xz-rectangle floor, under the sky.
+inline rt::scene matte_spheres_on_floor() {
+    using rt::color, rt::point3, rt::vec3;
+    auto floor = std::make_shared<rt::lambertian>(color(0.8, 0.8, 0.0));
+    auto blue  = std::make_shared<rt::lambertian>(color(0.1, 0.2, 0.5));
+    auto gray  = std::make_shared<rt::lambertian>(color(0.5, 0.5, 0.5));
+    auto red   = std::make_shared<rt::lambertian>(color(0.7, 0.2, 0.1));
+    auto white = std::make_shared<rt::lambertian>(color(0.9, 0.9, 0.9));
+
+    auto world = std::make_shared<rt::hittable_list>();
+    // The floor: y = -0.5, x in [-3, 3], z in [-4, 1]; its far edge shows the sky behind it.
+    world->add(
+        std::make_shared<rt::quad>(point3(-3, -0.5, -4), vec3(6, 0, 0), vec3(0, 0, 5), floor));
+    world->add(std::make_shared<rt::sphere>(point3(0, 0, -1.2), 0.5, blue));
+    world->add(std::make_shared<rt::sphere>(point3(-1.1, 0, -1.5), 0.5, gray));
+    world->add(std::make_shared<rt::sphere>(point3(1.1, 0, -1.5), 0.5, red));
+    world->add(std::make_shared<rt::sphere>(point3(0.45, -0.35, -0.55), 0.15, white));
+
+    rt::scene scene;
+    scene.world = world;
+    // The default sky and camera: at the origin looking down -z, vfov 90, 16:9.
+    scene.settings = {.width = 400, .samples_per_pixel = 100, .max_depth = 50};
+    return scene;
+}
