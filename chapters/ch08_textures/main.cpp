@@ -3,33 +3,12 @@
 // and an equirectangular image (longitude across, latitude down) is looked up at (u, v): the
 // texel in column u W and row (1 - v) H. The Lambertian albedo is that texel, decoded to linear.
 // --scene checker shows solid textures instead: a solid color and two 3D checkerboards.
-#include <memory>
 #include <string>
 
 #include "checker_scene.h"
 #include "common/command_line.h"
-#include "common/image_texture.h"
 #include "common/path_tracer.h"
-#include "common/sphere.h"
-#include "common/textured_lambertian.h"
-#include "common/thin_lens_camera.h"
-
-// Book 2's earth scene: a globe of radius 2 at the origin, seen from (0, 0, 12).
-rt::scene globe(const std::string& texture_file) {
-    auto surface = std::make_shared<rt::textured_lambertian>(
-        std::make_shared<rt::image_texture>(texture_file));
-    auto cam      = std::make_shared<rt::thin_lens_camera>();
-    cam->vfov     = 20;
-    cam->lookfrom = rt::point3(0, 0, 12);
-    cam->lookat   = rt::point3(0, 0, 0);
-
-    rt::scene scene;
-    scene.world    = std::make_shared<rt::sphere>(rt::point3(0, 0, 0), 2, surface);
-    scene.sky      = rt::background::uniform(rt::color(0.70, 0.80, 1.00));
-    scene.cam      = cam;
-    scene.settings = {.width = 400, .samples_per_pixel = 100, .max_depth = 50};
-    return scene;
-}
+#include "globe_scene.h"
 
 int main(int argc, char** argv) {
     rt::command_line cli("ch08_textures");

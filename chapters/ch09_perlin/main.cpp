@@ -2,44 +2,11 @@
 // Hermite weights, give noise that is random but continuous; summing octaves of it (turbulence)
 // and using it to shift the phase of sine stripes makes marble:
 //   gray = 0.5 (1 + sin(scale z + 10 turbulence(p))).
-#include <memory>
 #include <string>
 
 #include "common/command_line.h"
-#include "common/hittable_list.h"
-#include "common/image_texture.h"
-#include "common/noise_texture.h"
 #include "common/path_tracer.h"
-#include "common/sphere.h"
-#include "common/textured_lambertian.h"
-#include "common/thin_lens_camera.h"
-
-// Book 2's two Perlin spheres: a marble ground and a marble sphere sharing one texture.
-rt::scene perlin_spheres(const std::string& texture_file, bool with_globe) {
-    using rt::point3;
-    auto marble = std::make_shared<rt::textured_lambertian>(std::make_shared<rt::noise_texture>(4));
-    auto world  = std::make_shared<rt::hittable_list>();
-    world->add(std::make_shared<rt::sphere>(point3(0, -1000, 0), 1000, marble));
-    if (!with_globe) {
-        world->add(std::make_shared<rt::sphere>(point3(0, 2, 0), 2, marble));
-    } else {  // the image texture beside the noise, for comparison
-        auto earth = std::make_shared<rt::image_texture>(texture_file);
-        world->add(std::make_shared<rt::sphere>(point3(0, 2, 2.2), 2, marble));
-        world->add(std::make_shared<rt::sphere>(point3(0, 2, -2.2), 2,
-                                                std::make_shared<rt::textured_lambertian>(earth)));
-    }
-    auto cam      = std::make_shared<rt::thin_lens_camera>();
-    cam->vfov     = with_globe ? 30 : 20;
-    cam->lookfrom = point3(13, 2, 3);
-    cam->lookat   = point3(0, with_globe ? 1.5 : 0, 0);
-
-    rt::scene scene;
-    scene.world    = world;
-    scene.sky      = rt::background::uniform(rt::color(0.70, 0.80, 1.00));
-    scene.cam      = cam;
-    scene.settings = {.width = 400, .samples_per_pixel = 100, .max_depth = 50};
-    return scene;
-}
+#include "perlin_spheres.h"
 
 int main(int argc, char** argv) {
     rt::command_line cli("ch09_perlin");

@@ -2,42 +2,9 @@
 // nothing; the path tracer adds emission at every hit, L = Le + attenuation * L(scattered). With
 // a black background all light comes from the emitters. Quads Q + a u + b v make rectangles in
 // any orientation (book 2's first xy, yz and xz rectangles are special cases).
-#include <memory>
-
 #include "common/command_line.h"
-#include "common/diffuse_light.h"
-#include "common/hittable_list.h"
-#include "common/noise_texture.h"
 #include "common/path_tracer.h"
-#include "common/quad.h"
-#include "common/sphere.h"
-#include "common/textured_lambertian.h"
-#include "common/thin_lens_camera.h"
-
-// Book 2's simple light: two marble spheres lit by a spherical and a rectangular light.
-rt::scene simple_light() {
-    using rt::point3, rt::vec3;
-    auto marble = std::make_shared<rt::textured_lambertian>(std::make_shared<rt::noise_texture>(4));
-    auto light  = std::make_shared<rt::diffuse_light>(rt::color(4, 4, 4));
-
-    auto world = std::make_shared<rt::hittable_list>();
-    world->add(std::make_shared<rt::sphere>(point3(0, -1000, 0), 1000, marble));
-    world->add(std::make_shared<rt::sphere>(point3(0, 2, 0), 2, marble));
-    world->add(std::make_shared<rt::sphere>(point3(0, 7, 0), 2, light));
-    world->add(std::make_shared<rt::quad>(point3(3, 1, -2), vec3(2, 0, 0), vec3(0, 2, 0), light));
-
-    auto cam      = std::make_shared<rt::thin_lens_camera>();
-    cam->vfov     = 20;
-    cam->lookfrom = point3(26, 3, 6);
-    cam->lookat   = point3(0, 2, 0);
-
-    rt::scene scene;
-    scene.world    = world;
-    scene.sky      = rt::background::uniform(rt::color(0, 0, 0));
-    scene.cam      = cam;
-    scene.settings = {.width = 400, .samples_per_pixel = 100, .max_depth = 50};
-    return scene;
-}
+#include "simple_light.h"
 
 int main(int argc, char** argv) {
     return rt::command_line("ch10_lights").run(argc, argv, [] {
