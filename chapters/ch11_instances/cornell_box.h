@@ -2,6 +2,8 @@
 // A 555-unit room open at z = 0: green wall at x = 555, red at x = 0, white floor, ceiling and
 // back; a light just under the ceiling. The camera at (278, 278, -800) looks in along +z, so the
 // green wall is on the left of the image.
+// At the end, book 2's Cornell box itself, cornell_box(): chapter 11's report scene, and
+// --scene ch11 of later chapters' programs.
 #pragma once
 
 #include <memory>
@@ -86,4 +88,16 @@ inline rt::scene cornell_scene(const std::vector<rt::bounded_object>& objects,
     scene.cam      = cam;
     scene.settings = {.width = 600, .samples_per_pixel = 200, .max_depth = 50};
     return scene;
+}
+
+// Book 2's Cornell box: a tall box turned 15 degrees and a short one turned -18 degrees
+// (placed_box, above, wraps rt::box in rt::rotate and rt::translate).
+inline rt::scene cornell_box() {
+    using rt::point3, rt::vec3;
+    cornell_room room =
+        empty_cornell_room({point3(343, 554, 332), vec3(-130, 0, 0), vec3(0, 0, -105), 15});
+    auto objects = room.walls;
+    objects.emplace_back(placed_box(vec3(165, 330, 165), 15, vec3(265, 0, 295), room.white));
+    objects.emplace_back(placed_box(vec3(165, 165, 165), -18, vec3(130, 0, 65), room.white));
+    return cornell_scene(objects);
 }

@@ -10,18 +10,6 @@
 #include "cornell_box.h"
 #include "rotations_scene.h"
 
-// Book 2's Cornell box: a tall box turned 15 degrees and a short one turned -18 degrees
-// (placed_box, in cornell_box.h, wraps rt::box in rt::rotate and rt::translate).
-rt::scene cornell_box() {
-    using rt::point3, rt::vec3;
-    cornell_room room =
-        empty_cornell_room({point3(343, 554, 332), vec3(-130, 0, 0), vec3(0, 0, -105), 15});
-    auto objects = room.walls;
-    objects.emplace_back(placed_box(vec3(165, 330, 165), 15, vec3(265, 0, 295), room.white));
-    objects.emplace_back(placed_box(vec3(165, 165, 165), -18, vec3(130, 0, 65), room.white));
-    return cornell_scene(objects);
-}
-
 int main(int argc, char** argv) {
     rt::command_line cli("ch11_instances");
     std::string which = "cornell";
