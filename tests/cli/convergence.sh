@@ -1,0 +1,112 @@
+#!/usr/bin/env bash
+# tools/convergence on a tiny case (report: "Speed against error"): a reference made on the fly
+# into a temporary folder, then every method at 1..8 spp of --scene ch10 at 32 px.
+#   convergence.sh CH16_SOBOL
+# Checks: the reference and its record are written, and a normal run leaves them untouched; the
+# CSV has its columns, one curve per method with spp doubling from 1; its RMSE of mis + sobol at
+# 8 spp equals one computed here, independently, from the same render; the plot is a PNG; the
+# table has one row per method; a missing reference and a bad method are refused (exit code 2,
+# one line, nothing written). Exit code 77 (skipped) without matplotlib: only tools/install-deps
+# --report installs it.
+set -euo pipefail
+exe=$1
+here=$(cd "$(dirname "$0")" && pwd)
+convergence=$here/../../tools/convergence
+if ! /usr/bin/python3 -c 'import matplotlib, numpy' 2>/dev/null; then
+    echo "SKIP: needs python3-matplotlib (tools/install-deps --report)"
+    exit 77
+fi
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+fail() {
+    echo "FAIL: $*"
+    exit 1
+}
+common=(--width 32 --reference-dir refs --exe "$exe")
+
+# A missing reference is refused before anything is rendered or written.
+if "$convergence" ch10 "${common[@]}" --max-spp 8 --out-dir out 2>err.txt; then
+    fail "a run without a reference succeeded"
+else
+    code=$?
+fi
+[ "$code" -eq 2 ] || fail "a missing reference gave exit code $code, not 2"
+[ "$(wc -l <err.txt)" -eq 1 ] && grep -q "must have a converged reference" err.txt ||
+    fail "a missing reference must give one line naming it, got: $(cat err.txt)"
+[ ! -e out ] || fail "a refused run wrote $(ls out)"
+
+"$convergence" ch10 "${common[@]}" --make-reference --spp 16 2>/dev/null
+[ -s refs/ch10.pfm ] && [ -s refs/ch10.json ] || fail "no reference written: $(ls refs)"
+before=$(md5sum refs/ch10.pfm refs/ch10.json)
+
+# A bad method is refused.
+if "$convergence" ch10 "${common[@]}" --methods path:independent,mis:halton 2>err.txt; then
+    fail "a bad method was accepted"
+else
+    code=$?
+fi
+[ "$code" -eq 2 ] && [ "$(wc -l <err.txt)" -eq 1 ] && grep -q "mis:halton" err.txt ||
+    fail "a bad method gave exit code $code and: $(cat err.txt)"
+
+"$convergence" ch10 "${common[@]}" --max-spp 8 --stop spp --out-dir out 2>/dev/null
+[ "$(md5sum refs/ch10.pfm refs/ch10.json)" = "$before" ] || fail "a normal run changed the reference"
+"$exe" --scene ch10 --integrator mis --sampler sobol --width 32 --spp 8 --seed 1 --quiet \
+    --out mis8.pfm
+
+/usr/bin/python3 - <<'EOF' || exit 1
+import csv, math, struct, sys
+
+def fail(message):
+    print(f"FAIL: {message}")
+    sys.exit(1)
+
+def pfm(path):  # read with struct, not with the tool's numpy reader
+    with open(path, "rb") as f:
+        assert f.readline().strip() == b"PF"
+        w, h = map(int, f.readline().split())
+        little = float(f.readline()) < 0
+        data = f.read()
+    return struct.unpack(("<" if little else ">") + f"{w * h * 3}f", data)
+
+columns = ["scene", "integrator", "sampler", "spp", "seconds", "rmse", "relmse", "rays",
+           "samples_per_second"]
+with open("out/ch10.csv") as f:
+    reader = csv.DictReader(f)
+    if reader.fieldnames[:len(columns)] != columns:
+        fail(f"CSV columns must start with {columns}, got {reader.fieldnames}")
+    rows = list(reader)
+methods = {}
+for r in rows:
+    methods.setdefault((r["integrator"], r["sampler"]), []).append(r)
+expected = {(i, s) for i in ("path", "light", "mis") for s in ("independent", "sobol")}
+if set(methods) != expected:
+    fail(f"CSV must hold one curve per method, got {sorted(methods)}")
+for m, curve in methods.items():
+    spp = [int(r["spp"]) for r in curve]
+    if spp != [1, 2, 4, 8]:
+        fail(f"{m}: spp must double from 1 to 8, got {spp}")
+    for r in curve:
+        if r["scene"] != "ch10" or not (float(r["seconds"]) > 0 and float(r["rmse"]) > 0
+                                        and float(r["relmse"]) > 0 and int(r["rays"]) > 0):
+            fail(f"{m}: a row with a bad value: {r}")
+
+ref, img = pfm("refs/ch10.pfm"), pfm("mis8.pfm")
+rmse = math.sqrt(sum((a - b) ** 2 for a, b in zip(img, ref)) / len(ref))
+relmse = sum((a - b) ** 2 / (b * b + 0.01) for a, b in zip(img, ref)) / len(ref)
+row = methods[("mis", "sobol")][-1]
+for what, mine, theirs in (("RMSE", rmse, float(row["rmse"])),
+                           ("relative MSE", relmse, float(row["relmse"]))):
+    if abs(mine - theirs) > 1e-4 * mine:
+        fail(f"{what} of mis + sobol at 8 spp: the CSV says {theirs}, computed here {mine}")
+
+with open("out/ch10.png", "rb") as f:
+    if f.read(8) != b"\x89PNG\r\n\x1a\n":
+        fail("out/ch10.png is not a PNG")
+with open("out/ch10.md") as f:
+    table = [line for line in f if line.startswith("| ") and " + " in line.split("|")[1]]
+names = sorted(line.split("|")[1].strip() for line in table)
+if names != sorted(f"{i} + {s}" for i, s in expected):
+    fail(f"the table must have one row per method, got {names}")
+print("convergence: CSV, plot and table as expected")
+EOF
