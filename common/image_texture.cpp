@@ -13,6 +13,7 @@
 
 #include "display_encoding.h"
 #include "error.h"
+#include "png_guard.h"
 
 namespace rt {
 
@@ -113,6 +114,9 @@ image_texture::image_texture(const std::string& path, std::int64_t texel_limit) 
     }
     if (header_w < 1 || header_h < 1 || std::int64_t(header_w) * header_h > texel_limit)
         refuse_size(header_w, header_h);
+
+    // A PNG's data is inflated once within a bound first: stb would inflate a bomb whole.
+    if (std::string problem = png_data_problem(file.get()); !problem.empty()) refuse(path, problem);
 
     unsigned char* pixels = stbi_load_from_file(file.get(), &w, &h, &channels, 3);
     texels.reset(pixels);

@@ -7,7 +7,8 @@
 // Hostile files: the header is read (stbi_info) before anything is decoded or allocated, and an
 // image of more than max_texels = 2^26 texels (8192 x 8192; 192 MiB of texels) is refused
 // there, as film.h refuses a render of more than 2^26 pixels. So a small PNG that claims to be
-// 100000 x 100000 costs nothing.
+// 100000 x 100000 costs nothing. A PNG whose data would inflate to far more than its size needs
+// (a decompression bomb) is refused before stb decodes it (png_guard.h).
 #pragma once
 
 #include <cstdint>

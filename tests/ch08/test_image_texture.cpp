@@ -356,3 +356,38 @@ TEST_CASE("image_texture: PPM and JPEG files load too (the fuzz corpus's formats
     CHECK(std::abs(rt::to_srgb8(double(c.y())) - 100) <= 3);
     CHECK(std::abs(rt::to_srgb8(double(c.z())) - 50) <= 3);
 }
+
+TEST_CASE(
+    "image_texture: a PNG whose data inflates to far more than its size needs (a "
+    "decompression bomb) is refused before it is decoded",
+    "[ch08]") {
+    temp_folder dir("image_texture", "bomb");
+    // 1024 x 4096 gray texels of 0: 4 MiB of raw data that deflate packs into a few KiB.
+    const int w = 1024, h = 4096;
+    write_png(dir.file("tall.png"), w, h, 1, std::vector<std::uint8_t>(std::size_t(w) * h, 0));
+    const std::string tall = read_bytes(dir.file("tall.png"));
+    REQUIRE(tall.size() < 100000);
+    REQUIRE(tall.substr(12, 4) == "IHDR");
+    // The same file with its header claiming another size (its IHDR chunk rewritten).
+    auto claiming = [&](std::uint32_t width, std::uint32_t height) {
+        const std::string ihdr = big_endian(width) + big_endian(height) + tall.substr(24, 5);
+        return tall.substr(0, 8) + png_chunk("IHDR", ihdr) + tall.substr(33);
+    };
+    CHECK_NOTHROW(rt::image_texture(dir.file("tall.png")));
+
+    // 16 x 16 texels need 16 rows of 1 + 16 bytes: the 4 MiB stream is refused, with the sizes.
+    write_bytes(dir.file("bomb.png"), claiming(16, 16));
+    const std::string message = refusal(dir.file("bomb.png"));
+    CHECK_THAT(message, Catch::Contains("'" + dir.file("bomb.png") + "'"));
+    CHECK_THAT(message, Catch::Contains("inflates to more than 1049120 bytes where its 16 x 16 "
+                                        "texels need 272"));
+
+    // Half the rows: 2 MiB needed, 4 MiB given, within the allowance of twice plus 1 MiB (stb
+    // accepts data after the image, and some encoders leave some), so it loads.
+    write_bytes(dir.file("half_rows.png"), claiming(1024, 2048));
+    const rt::image_texture half(dir.file("half_rows.png"));
+    CHECK(half.height() == 2048);
+    // A quarter of the rows: 1 MiB needed, 4 MiB given, more than 2 x 1 MiB + 1 MiB: refused.
+    write_bytes(dir.file("quarter_rows.png"), claiming(1024, 1024));
+    CHECK_THAT(refusal(dir.file("quarter_rows.png")), Catch::Contains("inflates to more than"));
+}

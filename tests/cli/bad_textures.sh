@@ -3,8 +3,8 @@
 # one line on stderr naming the file (and, for an enormous one, its size), and the existing
 # output file is left as it was, with nothing else in the folder.
 #   bad_textures.sh CHAPTER_EXE GOOD_TEXTURE.png [ARGS...]   (ARGS choose a scene with a texture)
-# The files are made here: cut copies of the good texture, and headers written by hand (python3)
-# that claim sizes far beyond the 2^26-texel limit in a few dozen bytes.
+# The files are made here: cut copies of the good texture, headers written by hand (python3) that
+# claim sizes far beyond the 2^26-texel limit in a few dozen bytes, and a decompression bomb.
 set -uo pipefail
 exe=$1 good=$2
 shift 2
@@ -28,14 +28,21 @@ import struct, zlib
 def chunk(kind, data):
     return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
 
-def png(width, height, data=b""):
+def png(width, height, data=b"", compressed=None):
     ihdr = struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)  # 8-bit RGB
-    idat = chunk(b"IDAT", zlib.compress(data)) if data else b""
+    if data:
+        compressed = zlib.compress(data)
+    idat = chunk(b"IDAT", compressed) if compressed else b""
     return b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) + idat + chunk(b"IEND", b"")
 
 def jpeg(width, height):  # a start of frame (SOF0) with three components, and nothing else
     return (b"\xff\xd8\xff\xc0\x00\x11\x08" + struct.pack(">HH", height, width) +
             b"\x03\x01\x22\x00\x02\x11\x01\x03\x11\x01\xff\xd9")
+
+def bomb():
+    z = zlib.compressobj(9)
+    zeros = bytes(1 << 20)
+    return b"".join(z.compress(zeros) for _ in range(256)) + z.flush()
 
 files = {
     "huge.png": png(100000, 100000),
@@ -45,6 +52,8 @@ files = {
     "huge.ppm": b"P6\n100000 100000\n255\n" + bytes(30),
     # a valid header and a zlib stream that holds one row of the 4 x 4 image
     "short_data.png": png(4, 4, b"\x00" + bytes(12)),
+    # a decompression bomb: 1 x 1 texels, and 256 MiB of zeros in 256 KiB of zlib stream
+    "bomb.png": png(1, 1, compressed=bomb()),
 }
 for name, data in files.items():
     with open("textures/" + name, "wb") as f:
@@ -87,6 +96,7 @@ expect_refusal textures/header_only.png "not an image"
 expect_refusal textures/half.png "damaged or truncated"
 expect_refusal textures/no_end.png "damaged or truncated"
 expect_refusal textures/short_data.png "damaged or truncated"
+expect_refusal textures/bomb.png "inflates to more than 1048584 bytes where its 1 x 1 texels need 4"
 expect_refusal textures/huge.png "at most 67108864 texels (2^26)" "got 100000 x 100000"
 expect_refusal textures/wide.png "at most 67108864 texels (2^26)" "got 8193 x 8192"
 expect_refusal textures/huge.jpg "at most 67108864 texels (2^26)" "got 65535 x 65535"
