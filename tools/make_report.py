@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Writes report/README.md from report/intro.md, report/figures.txt (captions) and
 report/figures/timings.txt (each figure's settings, time and speed, as tools/render-report
-measured them on this machine).
+measured them on this machine: each line ends with the run's --stats-out record).
 
 report/figures.txt has two kinds of lines. A rendered figure, "figure | chapter | arguments |
 caption", is shown under its own heading with its command line and time; one with an empty
@@ -9,6 +9,7 @@ caption is shown only inside the composite figure that uses it. A composite figu
 "figure | crops | SOURCE... WxH+X+Y ZOOM | caption", is made by tools/render-report from
 figures rendered before it: the sources side by side, and below each the region WxH+X+Y enlarged
 ZOOM times."""
+import json
 import os
 import platform
 import re
@@ -17,10 +18,18 @@ import subprocess
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 REPORT = os.path.join(ROOT, "report")
 
-# e.g. "ch03_diffuse: 400x225, 100 spp, max depth 50, seed 1, 2 threads: 1.171 s, 7.683 M samples/s"
-SUMMARY = re.compile(
-    r"(?P<size>\d+x\d+), (?P<spp>\d+) spp, max depth (?P<depth>\d+), seed (?P<seed>\d+), "
-    r"(?P<threads>\d+) threads: (?P<seconds>[\d.]+) s, (?P<rate>[\d.]+) M samples/s")
+
+def timing(record, where):
+    """What the report shows of a run, as text, from its --stats-out record (a JSON string)."""
+    try:
+        r = json.loads(record)
+        s = r["settings"]
+        return {"size": f"{s['width']}x{s['height']}", "spp": str(s["spp"]),
+                "depth": str(s["max_depth"]), "seed": str(s["seed"]),
+                "threads": str(s["threads"]), "seconds": f"{r['seconds']:.3f}",
+                "rate": f"{r['samples_per_second'] * 1e-6:.3f}"}
+    except (ValueError, KeyError, TypeError) as e:
+        raise SystemExit(f"make_report: no --stats-out record for {where} ({e}): {record}")
 
 
 def read_figures():
@@ -38,11 +47,8 @@ def read_timings():
     rows = []
     with open(os.path.join(REPORT, "figures", "timings.txt")) as f:
         for line in f:
-            figure, extra, summary = line.rstrip("\n").split("|", 2)
-            match = SUMMARY.search(summary)
-            if not match:
-                raise SystemExit(f"make_report: no timing in the output of {figure}: {summary}")
-            rows.append((figure, extra, match.groupdict()))
+            figure, extra, record = line.rstrip("\n").split("|", 2)
+            rows.append((figure, extra, timing(record, figure)))
     return rows
 
 
@@ -82,15 +88,13 @@ def benchmark_section():
     rates = {}
     with open(path) as f:
         for line in f:
-            name, description, book, args, summary = line.rstrip("\n").split("|", 4)
-            match = SUMMARY.search(summary)
-            if not match:
-                raise SystemExit(f"make_report: no timing in benchmark {name}: {summary}")
-            rate = float(match["rate"])
+            name, description, book, args, record = line.rstrip("\n").split("|", 4)
+            t = timing(record, f"benchmark {name}")
+            rate = float(t["rate"])
             rates[name] = rate
             book_cell = f"{book}" if book else "-"
             ratio = f"{rate / float(book):.2f}" if book else "-"
-            out.append(f"| {description} | `{args}` ({match['size']}, {match['spp']} spp) | "
+            out.append(f"| {description} | `{args}` ({t['size']}, {t['spp']} spp) | "
                        f"{rate:.3f} | {book_cell} | {ratio} |")
     if "bouncing_bvh" in rates and "bouncing_list" in rates:
         out += ["", f"The BVH renders the bouncing spheres "
