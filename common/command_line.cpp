@@ -4,8 +4,10 @@
 
 #include <charconv>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <exception>
+#include <sstream>
 
 #include "error.h"
 #include "image_io.h"
@@ -104,22 +106,65 @@ std::string sampler_name(const render_settings& s) {
 }
 // [ch16 end]
 
+// [ch06 begin]
+// "must be a finite number <relation> <lo>" unless the whole text is a finite number that
+// satisfies it.
+CLI::Validator finite_number(double lo, bool lo_allowed) {
+    std::ostringstream rule;
+    rule << "must be a finite number " << (lo_allowed ? ">= " : "> ") << lo;
+    return CLI::Validator(
+        [lo, lo_allowed, rule = rule.str()](std::string& text) -> std::string {
+            double value   = 0;
+            auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+            const bool ok  = ec == std::errc() && end == text.data() + text.size() &&
+                            std::isfinite(value) && (value > lo || (lo_allowed && value == lo));
+            return ok ? "" : rule + ", got " + text;
+        },
+        rule.str().substr(8));  // the help shows "FLOAT:a finite number >= 0"
+}
+// [ch06 end]
+
 }  // namespace
+
+CLI::Validator integer_in(std::uint64_t lo, std::uint64_t hi) {
+    return CLI::Validator(
+        [lo, hi](std::string& text) -> std::string {
+            std::uint64_t value = 0;
+            auto [end, ec]      = std::from_chars(text.data(), text.data() + text.size(), value);
+            if (ec == std::errc() && end == text.data() + text.size() && value >= lo && value <= hi)
+                return "";
+            return "must be an integer from " + std::to_string(lo) + " to " + std::to_string(hi) +
+                   ", got " + text;
+        },
+        // The help shows "INT:INT in [1, 16384]"; a bound of 2^64 - 1 (--seed) says nothing.
+        hi == UINT64_MAX ? "" : "INT in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+}
+
+// [ch06 begin]
+CLI::Validator number_at_least(double lo) {
+    return finite_number(lo, true);
+}
+CLI::Validator number_above(double lo) {
+    return finite_number(lo, false);
+}
+// [ch06 end]
 
 command_line::command_line(std::string program_name)
     : program(std::move(program_name)), cli(program) {
     // A flag given twice takes its last value, as most Unix tools do.
     cli.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
     cli.add_option("--width", flags.width, "Image width in pixels (default: the scene's)")
-        ->check(CLI::Range(1, 16384));
+        ->check(integer_in(1, 16384));
     cli.add_option("--spp", flags.samples_per_pixel, "Samples per pixel (default: the scene's)")
-        ->check(CLI::Range(1, 1 << 20));
+        ->check(integer_in(1, 1 << 20));
     cli.add_option("--max-depth", flags.max_depth,
                    "Ray segments per path at most (default: the scene's)")
-        ->check(CLI::Range(1, 10000));
-    cli.add_option("--seed", flags.seed, "Seed of the random streams")->capture_default_str();
+        ->check(integer_in(1, 10000));
+    cli.add_option("--seed", flags.seed, "Seed of the random streams")
+        ->check(integer_in(0, UINT64_MAX))
+        ->capture_default_str();
     cli.add_option("--threads", flags.threads, "Worker threads; 0 = all cores")
-        ->check(CLI::Range(0, 1024))
+        ->check(integer_in(0, 1024))
         ->capture_default_str();
     cli.add_option("--out", outputs, "Output image, .png or .pfm; may repeat")
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)

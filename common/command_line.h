@@ -7,6 +7,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
@@ -16,6 +17,17 @@
 #include "render.h"
 
 namespace rt {
+
+// Checks for a numeric flag, as CLI11 validators; the message says the rule and the value:
+// "--width: must be an integer from 1 to 16384, got 2.5". Decimal digits only, so the number
+// used is the one typed (CLI11 alone reads "0x10" as 16, calls 2.5 "not in range 1 to 16384",
+// and turns a --seed of -1 into 2^64 - 1).
+CLI::Validator integer_in(std::uint64_t lo, std::uint64_t hi);
+// [ch06 begin]
+// A finite real number >= lo ("--aperture: must be a finite number >= 0, got -1"), or > lo.
+CLI::Validator number_at_least(double lo);
+CLI::Validator number_above(double lo);
+// [ch06 end]
 
 class command_line {
   public:

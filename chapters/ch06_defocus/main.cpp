@@ -16,10 +16,10 @@ int main(int argc, char** argv) {
     std::string which = "glass";
     cli.app()
         .add_option("--aperture", aperture, "Lens diameter (default 2.0; final: 0.105)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(rt::number_at_least(0));
     cli.app()
         .add_option("--focus-dist", focus, "Distance to the sharp plane (default: lookat)")
-        ->check(CLI::PositiveNumber);
+        ->check(rt::number_above(0));
     cli.app()
         .add_option("--scene", which, "glass, or final (book 1's random spheres)")
         ->check(CLI::IsMember({"glass", "final"}));
