@@ -13,6 +13,7 @@
 
 #include "display_encoding.h"
 #include "error.h"
+#include "jpeg_guard.h"
 #include "png_guard.h"
 
 namespace rt {
@@ -82,6 +83,20 @@ std::optional<declared_size> png_or_jpeg_size(std::FILE* file) {
     }
 }
 
+// Whether the file starts as a PNG, a JPEG or a binary PPM (P6) or PGM (P5) does. stb_image
+// reads more formats (BMP, TGA, GIF, PSD, PIC, HDR), but we take only these three. Leaves the
+// file rewound.
+bool readable_format(std::FILE* file) {
+    std::array<unsigned char, 8> head{};
+    std::rewind(file);
+    const std::size_t got = std::fread(head.data(), 1, head.size(), file);
+    std::rewind(file);
+    const bool png  = got == 8 && std::memcmp(head.data(), "\x89PNG\r\n\x1a\n", 8) == 0;
+    const bool jpeg = got >= 3 && head[0] == 0xFF && head[1] == 0xD8 && head[2] == 0xFF;
+    const bool pnm  = got >= 2 && head[0] == 'P' && (head[1] == '5' || head[1] == '6');
+    return png || jpeg || pnm;
+}
+
 }  // namespace
 
 void image_texture::stb_free::operator()(unsigned char* pixels) const {
@@ -99,7 +114,13 @@ image_texture::image_texture(const std::string& path, std::int64_t texel_limit) 
         refuse(path, S_ISDIR(about.st_mode) ? "it is a folder" : "it is not a regular file");
     if (about.st_size == 0) refuse(path, "the file is empty");
 
-    // The header first: the size is checked before stb allocates anything.
+    // Only the formats the fuzz target covers reach stb_image (each of its other decoders is one
+    // more that a hostile file could reach), and JPEG tables stb 2.27 overflows never do.
+    if (!readable_format(file.get())) refuse(path, "not a PNG, JPEG or binary PPM/PGM image");
+    if (std::string problem = jpeg_table_problem(file.get()); !problem.empty())
+        refuse(path, problem);
+
+    // The header next: the size is checked before stb allocates anything.
     auto refuse_size = [&](std::int64_t width, std::int64_t height) {
         throw user_error("texture '" + path + "' must have at most " + std::to_string(texel_limit) +
                          " texels" + (texel_limit == max_texels ? " (2^26)" : "") + ", got " +
@@ -110,7 +131,7 @@ image_texture::image_texture(const std::string& path, std::int64_t texel_limit) 
         auto size = png_or_jpeg_size(file.get());
         if (size && size->width * size->height > texel_limit)
             refuse_size(size->width, size->height);
-        refuse(path, "not an image stb_image can read");
+        refuse(path, "damaged or truncated image (its header cannot be read)");
     }
     if (header_w < 1 || header_h < 1 || std::int64_t(header_w) * header_h > texel_limit)
         refuse_size(header_w, header_h);

@@ -7,8 +7,10 @@
 // Hostile files: the header is read (stbi_info) before anything is decoded or allocated, and an
 // image of more than max_texels = 2^26 texels (8192 x 8192; 192 MiB of texels) is refused
 // there, as film.h refuses a render of more than 2^26 pixels. So a small PNG that claims to be
-// 100000 x 100000 costs nothing. A PNG whose data would inflate to far more than its size needs
-// (a decompression bomb) is refused before stb decodes it (png_guard.h).
+// 100000 x 100000 costs nothing. Only PNG, JPEG and binary PPM/PGM files reach stb_image, the
+// formats the fuzz target (fuzz/fuzz_texture.cpp) covers, and no file with a fault it found in
+// stb 2.27: a PNG that inflates to far more than its size needs (png_guard.h), a JPEG table that
+// overflows stb's arrays (jpeg_guard.h).
 #pragma once
 
 #include <cstdint>
@@ -24,10 +26,10 @@ class image_texture : public texture {
     // The most texels a texture may have: 2^26, 192 MiB of 8-bit RGB.
     static constexpr std::int64_t max_texels = std::int64_t(1) << 26;
 
-    // Loads PNG, JPEG, PPM/PGM, BMP, TGA, GIF, ... with stb_image. Throws user_error, one line
-    // naming the file, when it is missing, not a regular file, empty, not an image, truncated or
-    // damaged, or larger than texel_limit texels (tests and the fuzz target pass a smaller limit
-    // to reach the refusal with small files).
+    // Loads a PNG, JPEG or binary PPM/PGM file with stb_image. Throws user_error, one line
+    // naming the file, when it is missing, not a regular file, empty, of another format,
+    // truncated or damaged, or larger than texel_limit texels (tests and the fuzz target pass a
+    // smaller limit to reach the refusal with small files).
     explicit image_texture(const std::string& path, std::int64_t texel_limit = max_texels);
 
     color value(real u, real v, const point3& p) const override;

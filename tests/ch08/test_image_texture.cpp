@@ -391,3 +391,47 @@ TEST_CASE(
     write_bytes(dir.file("quarter_rows.png"), claiming(1024, 1024));
     CHECK_THAT(refusal(dir.file("quarter_rows.png")), Catch::Contains("inflates to more than"));
 }
+
+TEST_CASE(
+    "image_texture: formats other than PNG, JPEG and binary PPM/PGM are refused, though stb "
+    "reads them",
+    "[ch08]") {
+    temp_folder dir("image_texture", "formats_refused");
+    const std::vector<std::uint8_t> gray = {10, 20, 30, 40};
+    REQUIRE(stbi_write_bmp(dir.file("quad.bmp").c_str(), 2, 2, 1, gray.data()) != 0);
+    REQUIRE(stbi_write_tga(dir.file("quad.tga").c_str(), 2, 2, 1, gray.data()) != 0);
+    write_bytes(dir.file("ascii.ppm"), "P3\n1 1\n255\n1 2 3\n");  // stb reads only P5 and P6
+    for (const std::string name : {"quad.bmp", "quad.tga", "ascii.ppm"}) {
+        INFO(name);
+        CHECK_THAT(refusal(dir.file(name)),
+                   Catch::Contains("'" + dir.file(name) + "'") &&
+                       Catch::EndsWith("not a PNG, JPEG or binary PPM/PGM image"));
+    }
+    // The same texels as a binary PGM load.
+    write_bytes(dir.file("quad.pgm"), std::string("P5\n2 2\n255\n\x0A\x14\x1E\x28", 15));
+    CHECK(close(at(rt::image_texture(dir.file("quad.pgm")), 0.25, 0.75), decoded(10, 10, 10)));
+}
+
+TEST_CASE(
+    "image_texture: a JPEG Huffman table of more than 256 codes is refused before stb "
+    "reads it (stb 2.27 would write past its arrays)",
+    "[ch08]") {
+    temp_folder dir("image_texture", "dht");
+    // SOI, then a DHT segment: class/id 0, sixteen counts of 20 (320 codes), 320 symbols.
+    auto dht = [](int count) {
+        const int length = 2 + 17 + 16 * count;
+        return std::string("\xFF\xD8\xFF\xC4", 4) + char(length >> 8) + char(length & 0xFF) +
+               std::string(1, '\0') + std::string(16, char(count)) +
+               std::string(std::size_t(16 * count), '\0');
+    };
+    write_bytes(dir.file("overflow.jpg"), dht(20));
+    CHECK_THAT(refusal(dir.file("overflow.jpg")),
+               Catch::Contains("'" + dir.file("overflow.jpg") + "'") &&
+                   Catch::EndsWith("(a JPEG Huffman table of 320 codes, more than 256)"));
+    // 16 x 16 = 256 codes is within the rule: stb then refuses the file for what it lacks.
+    write_bytes(dir.file("full_table.jpg"), dht(16));
+    CHECK_THAT(refusal(dir.file("full_table.jpg")), !Catch::Contains("Huffman"));
+    // A table cut short by the end of the file is checked as far as it goes.
+    write_bytes(dir.file("cut.jpg"), dht(20).substr(0, 4 + 2 + 1 + 15));
+    CHECK_THAT(refusal(dir.file("cut.jpg")), Catch::EndsWith("of 300 codes, more than 256)"));
+}

@@ -52,6 +52,11 @@ files = {
     "huge.ppm": b"P6\n100000 100000\n255\n" + bytes(30),
     # a valid header and a zlib stream that holds one row of the 4 x 4 image
     "short_data.png": png(4, 4, b"\x00" + bytes(12)),
+    # a JPEG Huffman table (DHT) of 16 x 20 = 320 codes: stb 2.27 would write past its arrays
+    "dht_overflow.jpg": b"\xff\xd8\xff\xc4\x01\x51\x00" + bytes([20] * 16) + bytes(320),
+    # a format stb_image reads but we do not: a BMP of 1 x 1 texels
+    "bitmap.bmp": b"BM" + struct.pack("<IHHIIiiHHIIiiII", 58, 0, 0, 54, 40, 1, 1, 1, 24, 0, 4,
+                                      2835, 2835, 0, 0) + b"\x00\x00\xff\x00",
     # a decompression bomb: 1 x 1 texels, and 256 MiB of zeros in 256 KiB of zlib stream
     "bomb.png": png(1, 1, compressed=bomb()),
 }
@@ -91,8 +96,10 @@ expect_refusal textures/missing.png "No such file or directory"
 expect_refusal textures/folder.png "is a folder"
 expect_refusal /dev/null "not a regular file"
 expect_refusal textures/empty.png "empty"
-expect_refusal textures/notes.png "not an image"
-expect_refusal textures/header_only.png "not an image"
+expect_refusal textures/notes.png "not a PNG, JPEG or binary PPM/PGM image"
+expect_refusal textures/header_only.png "damaged or truncated"
+expect_refusal textures/dht_overflow.jpg "a JPEG Huffman table of 320 codes, more than 256"
+expect_refusal textures/bitmap.bmp "not a PNG, JPEG or binary PPM/PGM image"
 expect_refusal textures/half.png "damaged or truncated"
 expect_refusal textures/no_end.png "damaged or truncated"
 expect_refusal textures/short_data.png "damaged or truncated"
