@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <sstream>
 
 #include "error.h"
@@ -96,6 +97,18 @@ void print_summary(const std::string& name, const film& f, const render_settings
                  name.c_str(), f.width, f.height, s.samples_per_pixel, s.max_depth,
                  static_cast<unsigned long long>(s.seed), part.c_str(), r.threads, r.seconds,
                  double(r.camera_samples()) / r.seconds * 1e-6);
+}
+
+// Whether two paths name the same file, as far as the paths tell ("x.pfm", "./x.pfm").
+bool same_file(const std::string& a, const std::string& b) {
+    namespace fs  = std::filesystem;
+    auto resolved = [](const std::string& path) {
+        std::error_code ec;
+        fs::path full = fs::absolute(path, ec);
+        if (!ec) full = fs::weakly_canonical(full, ec);
+        return ec ? fs::path(path) : full;
+    };
+    return resolved(a) == resolved(b);
 }
 
 // [ch16 begin]
@@ -228,6 +241,13 @@ std::optional<int> command_line::parse(int argc, char** argv) {
         return 2;
     }
     if (outputs.empty()) outputs.push_back(program + ".png");
+    // Written after the images, the variance would replace one of them without a word.
+    for (const auto& path : outputs)
+        if (!variance_output.empty() && same_file(path, variance_output)) {
+            std::fprintf(stderr, "%s: error: --variance-out must differ from every --out, got %s\n",
+                         program.c_str(), variance_output.c_str());
+            return 2;
+        }
     return std::nullopt;
 }
 
