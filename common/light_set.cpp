@@ -72,7 +72,16 @@ real light_set::pdf(const point3& ref, const vec3& wi) const {
 real light_set::pdf_of_hit(const point3& ref, const vec3& wi, const hit_record& hit) const {
     auto found = light_of_shape.find(hit.object);
     if (found == light_of_shape.end()) return 0;
-    return found->second->pdf_at(ref, wi, hit) / real(lights.size());
+    // rec.object names the shape, not where it stands: a light's shape also placed by an
+    // instance is hit as the same object. Only the light where it stands itself is aimed at, so
+    // the hit counts as that light only if the shape, asked directly, is hit at the same point.
+    hit_record direct;
+    if (!hit.object->hit(ray(ref, wi), interval(0, infinity), direct)) return 0;
+    real apart = (direct.p - hit.p).length();
+    if (!(apart <=
+          4 * (direct.p_error + hit.p_error) + spawn_offset_scale * (hit.p - ref).length()))
+        return 0;
+    return found->second->pdf_at(ref, wi, direct) / real(lights.size());
 }
 
 real light_set::pdf_of_sky(const point3& ref, const vec3& wi) const {

@@ -55,12 +55,17 @@ real sphere_light::pdf(const point3& ref, const vec3& wi) const {
 
 real sphere_light::pdf_at(const point3& ref, const vec3& wi, const hit_record& hit) const {
     real s = sin2_max(ref);
-    if (s < 1) return 1 / (2 * pi * one_minus_cos_max(s));
+    if (s < 1) {
+        // A sphere so small or far that its cone underflows is never sampled (sample() refuses
+        // an infinite density): density 0.
+        real density = 1 / (2 * pi * one_minus_cos_max(s));
+        return std::isfinite(density) ? density : 0;
+    }
     // From inside: area density 1 / (4 pi r^2), times d^2 / |cos| for solid angle.
     real r         = shape->radius();
     real cos_light = std::fabs(dot(hit.normal, wi));
-    if (!(cos_light > 0)) return 0;
-    return (hit.p - ref).length_squared() / (cos_light * 4 * pi * r * r);
+    real density   = (hit.p - ref).length_squared() / (cos_light * 4 * pi * r * r);
+    return cos_light > 0 && std::isfinite(density) ? density : 0;  // as quad_light::pdf_at
 }
 
 }  // namespace rt

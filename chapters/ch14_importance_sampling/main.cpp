@@ -1,0 +1,41 @@
+// Chapter 14: importance sampling. A Monte Carlo estimate of an integral,
+//   integral of g  ~=  (1/N) sum g(x_i) / p(x_i),
+// is right for any density p that is nonzero wherever g is, and the less noisy the more p looks
+// like g. Until now a path's next direction followed the material alone (cos / pi for a diffuse
+// surface), so a small lamp was found only by luck. Book 3 aims half of the directions at the
+// lights: a quad light by a uniform point of its area, a sphere light by the cone of directions
+// it fills (both as densities per solid angle), and weights by the mixture
+//   p(wi) = 1/2 p_material(wi) + 1/2 p_lights(wi),   weight = f(wi) |cos| / p(wi).
+// --integrator path renders with chapter 03's path tracer instead; --scene chNN renders chapter
+// NN's scene (as book 3 re-renders book 2's Cornell box), --scene chNN-NAME another of its scenes.
+#include <string>
+#include <vector>
+
+#include "book3_cornell_box.h"
+#include "common/command_line.h"
+#include "common/mixture_tracer.h"
+#include "common/path_tracer.h"
+#include "scene_catalog.h"
+
+int main(int argc, char** argv) {
+    rt::command_line cli("ch14_importance_sampling");
+    std::string which = "ch14", integrator = "light", texture_file = RT_ASSET_DIR "/globe.png";
+    std::vector<std::string> names = scene_names();
+    names.insert(names.begin(), "ch14");
+    cli.app()
+        .add_option("--scene", which,
+                    "ch14 (book 3's Cornell box), or chNN / chNN-NAME: an earlier chapter's scene")
+        ->check(CLI::IsMember(names))
+        ->capture_default_str();
+    cli.app()
+        .add_option("--integrator", integrator,
+                    "light (book 3's mixture), or path (chapter 03's path tracer)")
+        ->check(CLI::IsMember({"light", "path"}))
+        ->capture_default_str();
+    cli.app().add_option("--texture", texture_file, "Image for globes")->capture_default_str();
+    return cli.run(argc, argv, [&] {
+        rt::scene scene =
+            which == "ch14" ? book3_cornell_box() : scene_by_name(which, texture_file);
+        return integrator == "light" ? rt::mixture_trace(scene) : rt::path_trace(scene);
+    });
+}

@@ -1,0 +1,43 @@
+// Chapter 15: next-event estimation and multiple importance sampling. At every surface the path
+// can evaluate, it does two things: it aims a shadow ray at a point of a light (next-event
+// estimation: the light arrives unless something blocks it, or a medium dims it by
+// exp(-density * distance)), and it scatters as its material chooses. A light reached either
+// way counts with Veach's power heuristic weight,
+//   w_light(wi) = p_light(wi)^2 / (p_light(wi)^2 + p_material(wi)^2),
+// and w_material = 1 - w_light for the same path, so the two estimates add up to one unbiased
+// answer that is good wherever either strategy is. Russian roulette ends paths that carry
+// little light, and divides the survivors by their chance to survive.
+// --integrator light (chapter 14) or path (chapter 03) for comparison; --scene as in chapter 14.
+#include <string>
+#include <vector>
+
+#include "ch14_importance_sampling/book3_cornell_box.h"
+#include "ch14_importance_sampling/scene_catalog.h"
+#include "common/command_line.h"
+#include "common/mis_tracer.h"
+#include "common/mixture_tracer.h"
+#include "common/path_tracer.h"
+
+int main(int argc, char** argv) {
+    rt::command_line cli("ch15_mis");
+    std::string which = "ch14", integrator = "mis", texture_file = RT_ASSET_DIR "/globe.png";
+    std::vector<std::string> names = scene_names();
+    names.insert(names.begin(), "ch14");
+    cli.app()
+        .add_option("--scene", which,
+                    "ch14 (book 3's Cornell box), or chNN / chNN-NAME: an earlier chapter's scene")
+        ->check(CLI::IsMember(names))
+        ->capture_default_str();
+    cli.app()
+        .add_option("--integrator", integrator,
+                    "mis (next-event estimation with MIS), light (book 3), or path (chapter 03)")
+        ->check(CLI::IsMember({"mis", "light", "path"}))
+        ->capture_default_str();
+    cli.app().add_option("--texture", texture_file, "Image for globes")->capture_default_str();
+    return cli.run(argc, argv, [&] {
+        rt::scene scene =
+            which == "ch14" ? book3_cornell_box() : scene_by_name(which, texture_file);
+        if (integrator == "mis") return rt::mis_trace(scene);
+        return integrator == "light" ? rt::mixture_trace(scene) : rt::path_trace(scene);
+    });
+}

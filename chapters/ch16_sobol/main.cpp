@@ -1,0 +1,56 @@
+// Chapter 16: better samples. Independent random numbers clump and leave holes, and the error
+// of N of them falls only as 1/sqrt(N). Sobol's sequence fills the unit square evenly: any
+// 2^m consecutive points put exactly one point in each of 2^m equal cells. Scrambling it
+// (Owen: every binary digit flipped by a random function of the digits before it) keeps that and
+// makes each point uniformly random, so estimates stay unbiased; shuffling the order per pixel
+// (Burley 2020) keeps neighbouring pixels from sharing a pattern. Each draw of a path has its
+// place (sampler.h: the camera's draws, then 8 per segment), so draw j of segment k is always
+// the same kind of number and its points stay evenly spread.
+// --sampler independent for comparison; --integrator and --scene as in chapter 15.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ch14_importance_sampling/book3_cornell_box.h"
+#include "ch14_importance_sampling/scene_catalog.h"
+#include "common/command_line.h"
+#include "common/mis_tracer.h"
+#include "common/mixture_tracer.h"
+#include "common/path_tracer.h"
+#include "common/sobol_sampler.h"
+
+namespace {
+std::unique_ptr<rt::sampler> make_sobol(std::uint64_t seed) {
+    return std::make_unique<rt::sobol_sampler>(seed);
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+    rt::command_line cli("ch16_sobol");
+    std::string which = "ch14", integrator = "mis", samples = "sobol";
+    std::string texture_file       = RT_ASSET_DIR "/globe.png";
+    std::vector<std::string> names = scene_names();
+    names.insert(names.begin(), "ch14");
+    cli.app()
+        .add_option("--scene", which,
+                    "ch14 (book 3's Cornell box), or chNN / chNN-NAME: an earlier chapter's scene")
+        ->check(CLI::IsMember(names))
+        ->capture_default_str();
+    cli.app()
+        .add_option("--integrator", integrator,
+                    "mis (chapter 15), light (chapter 14), or path (chapter 03)")
+        ->check(CLI::IsMember({"mis", "light", "path"}))
+        ->capture_default_str();
+    cli.app()
+        .add_option("--sampler", samples, "sobol, or independent (chapter 01's PCG32 streams)")
+        ->check(CLI::IsMember({"sobol", "independent"}))
+        ->capture_default_str();
+    cli.app().add_option("--texture", texture_file, "Image for globes")->capture_default_str();
+    return cli.run(argc, argv, [&] {
+        rt::scene scene =
+            which == "ch14" ? book3_cornell_box() : scene_by_name(which, texture_file);
+        if (samples == "sobol") scene.settings.make_sampler = make_sobol;
+        if (integrator == "mis") return rt::mis_trace(scene);
+        return integrator == "light" ? rt::mixture_trace(scene) : rt::path_trace(scene);
+    });
+}
