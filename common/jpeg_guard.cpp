@@ -1,7 +1,6 @@
 #include "jpeg_guard.h"
 
 #include <array>
-#include <vector>
 
 namespace rt {
 
@@ -21,19 +20,28 @@ int next_marker(std::FILE* file) {
     }
 }
 
-// The problem of one DHT segment's payload: one or more tables, each a class/id byte, 16 counts
-// of codes by length, and as many symbols as the counts add up to. A table cut short by the end
-// of the file counts what is there (stb reads 0 past the end).
-std::string huffman_problem(const std::vector<unsigned char>& payload) {
-    std::size_t at = 0;
-    while (at < payload.size()) {
+// stb_image's reading of a DHT segment: tables one after another, each a class/id byte, 16
+// counts of codes by length and as many symbols as the counts add up to, while the segment's
+// length says there is more. Like stb, it reads the counts from the file whatever the length
+// says (0 past the end), so a table that claims more than its segment holds is seen as stb sees
+// it. Returns the problem, or empty with `stop` set when stb would stop reading the file here.
+std::string huffman_problem(std::FILE* file, int length, bool& stop) {
+    auto byte = [file] {
+        const int c = std::fgetc(file);
+        return c == EOF ? 0 : c;
+    };
+    int left = length - 2;
+    while (left > 0) {
+        byte();  // class and id
         int codes = 0;
-        for (std::size_t i = at + 1; i <= at + 16 && i < payload.size(); ++i) codes += payload[i];
+        for (int i = 0; i < 16; ++i) codes += byte();
         if (codes > 256)
             return "damaged or truncated image (a JPEG Huffman table of " + std::to_string(codes) +
                    " codes, more than 256)";
-        at += 17 + std::size_t(codes);
+        for (int i = 0; i < codes; ++i) byte();
+        left -= 17 + codes;
     }
+    stop = left != 0;  // stb refuses a segment whose tables do not fill it exactly
     return "";
 }
 
@@ -50,16 +58,17 @@ std::string jpeg_table_problem(std::FILE* file) {
         const int marker = next_marker(file);
         if (marker == EOF || marker == 0xD9) return "";  // the end, or end of image
         if (marker == 0xD8 || marker == 0x01) continue;  // markers without a length
-        std::array<unsigned char, 2> length{};
-        if (std::fread(length.data(), 1, 2, file) != 2) return "";
-        const int size = (length[0] << 8 | length[1]) - 2;
-        if (size < 0) return "";
-        std::vector<unsigned char> payload(std::size_t(size), 0);
-        const std::size_t got = std::fread(payload.data(), 1, payload.size(), file);
-        payload.resize(got);  // a segment cut short is checked as far as it goes
-        if (marker == 0xC4)
-            if (std::string problem = huffman_problem(payload); !problem.empty()) return problem;
-        if (got < std::size_t(size)) return "";
+        std::array<unsigned char, 2> bytes{};
+        if (std::fread(bytes.data(), 1, 2, file) != 2) return "";
+        const int length = bytes[0] << 8 | bytes[1];
+        if (marker == 0xC4) {
+            bool stop = false;
+            if (std::string problem = huffman_problem(file, length, stop); !problem.empty())
+                return problem;
+            if (stop) return "";
+        } else if (length < 2 || std::fseek(file, length - 2, SEEK_CUR) != 0) {
+            return "";
+        }
     }
 }
 

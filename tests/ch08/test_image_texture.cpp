@@ -434,4 +434,12 @@ TEST_CASE(
     // A table cut short by the end of the file is checked as far as it goes.
     write_bytes(dir.file("cut.jpg"), dht(20).substr(0, 4 + 2 + 1 + 15));
     CHECK_THAT(refusal(dir.file("cut.jpg")), Catch::EndsWith("of 300 codes, more than 256)"));
+    // A segment whose length (17) ends before its table's last two counts: stb reads them from
+    // the bytes after it all the same (found by the fuzz target), so the guard does too.
+    std::string short_segment("\xFF\xD8\xFF\xC4\x00\x11", 6);
+    short_segment.append(15, '\0');
+    short_segment.append(2, '\xFF');
+    write_bytes(dir.file("short_segment.jpg"), short_segment);
+    CHECK_THAT(refusal(dir.file("short_segment.jpg")),
+               Catch::EndsWith("of 510 codes, more than 256)"));
 }
