@@ -15,6 +15,7 @@
 #include "error.h"
 #include "jpeg_guard.h"
 #include "png_guard.h"
+#include "pnm_guard.h"
 
 namespace rt {
 
@@ -119,6 +120,8 @@ image_texture::image_texture(const std::string& path, std::int64_t texel_limit) 
     if (!readable_format(file.get())) refuse(path, "not a PNG, JPEG or binary PPM/PGM image");
     if (std::string problem = jpeg_table_problem(file.get()); !problem.empty())
         refuse(path, problem);
+    if (std::string problem = pnm_problem(file.get(), false); !problem.empty())
+        refuse(path, problem);
 
     // The header next: the size is checked before stb allocates anything.
     auto refuse_size = [&](std::int64_t width, std::int64_t height) {
@@ -129,15 +132,20 @@ image_texture::image_texture(const std::string& path, std::int64_t texel_limit) 
     int header_w = 0, header_h = 0, channels = 0;
     if (!stbi_info_from_file(file.get(), &header_w, &header_h, &channels)) {
         auto size = png_or_jpeg_size(file.get());
-        if (size && size->width * size->height > texel_limit)
+        // Each side below 2^32: the product fits 64 unsigned bits (found by the fuzz target).
+        if (size &&
+            std::uint64_t(size->width) * std::uint64_t(size->height) > std::uint64_t(texel_limit))
             refuse_size(size->width, size->height);
         refuse(path, "damaged or truncated image (its header cannot be read)");
     }
     if (header_w < 1 || header_h < 1 || std::int64_t(header_w) * header_h > texel_limit)
         refuse_size(header_w, header_h);
 
-    // A PNG's data is inflated once within a bound first: stb would inflate a bomb whole.
+    // A PNG's data is inflated once within a bound first: stb would inflate a bomb whole. A
+    // PPM/PGM must hold all its texels: stb would leave the missing ones unwritten.
     if (std::string problem = png_data_problem(file.get()); !problem.empty()) refuse(path, problem);
+    if (std::string problem = pnm_problem(file.get(), true); !problem.empty())
+        refuse(path, problem);
 
     unsigned char* pixels = stbi_load_from_file(file.get(), &w, &h, &channels, 3);
     texels.reset(pixels);

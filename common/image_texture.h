@@ -10,7 +10,8 @@
 // 100000 x 100000 costs nothing. Only PNG, JPEG and binary PPM/PGM files reach stb_image, the
 // formats the fuzz target (fuzz/fuzz_texture.cpp) covers, and no file with a fault it found in
 // stb 2.27: a PNG that inflates to far more than its size needs (png_guard.h), a JPEG table that
-// overflows stb's arrays (jpeg_guard.h).
+// overflows stb's arrays (jpeg_guard.h), a PPM header number that overflows or texel data cut
+// short (pnm_guard.h).
 #pragma once
 
 #include <cstdint>

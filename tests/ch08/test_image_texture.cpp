@@ -299,6 +299,9 @@ TEST_CASE(
     // The same from a PPM header, and one side alone may be long: 2^26 + 1 texels in one row.
     write_bytes(dir.file("huge.ppm"), "P6\n100000 100000\n255\n" + std::string(30, '\0'));
     CHECK_THAT(refusal(dir.file("huge.ppm")), Catch::EndsWith("got 100000 x 100000"));
+    // The most a PNG header can claim, 2^32 - 1 a side: no overflow on the way to the refusal.
+    write_bytes(dir.file("most.png"), png_claiming(0xFFFFFFFFu, 0xFFFFFFFFu));
+    CHECK_THAT(refusal(dir.file("most.png")), Catch::EndsWith("got 4294967295 x 4294967295"));
     write_bytes(dir.file("long.png"), png_claiming((1u << 26) + 1, 1));
     CHECK_THAT(refusal(dir.file("long.png")), Catch::EndsWith("got 67108865 x 1"));
 
@@ -442,4 +445,34 @@ TEST_CASE(
     write_bytes(dir.file("short_segment.jpg"), short_segment);
     CHECK_THAT(refusal(dir.file("short_segment.jpg")),
                Catch::EndsWith("of 510 codes, more than 256)"));
+}
+
+TEST_CASE(
+    "image_texture: a PPM/PGM whose header numbers overflow an int, or whose texels are cut "
+    "short, is refused before stb reads it",
+    "[ch08]") {
+    temp_folder dir("image_texture", "pnm");
+    // A header, then n bytes of texel data (appended: GCC 12 warns, wrongly, on string + string).
+    auto with_bytes = [](const char* header, std::size_t n) {
+        std::string bytes = header;
+        bytes.append(n, 'x');
+        return bytes;
+    };
+    // stb 2.27 adds the digits up in an int: 99999999999 would overflow it.
+    write_bytes(dir.file("digits.ppm"), with_bytes("P6\n99999999999 1\n255\n", 3));
+    CHECK_THAT(refusal(dir.file("digits.ppm")),
+               Catch::Contains("'" + dir.file("digits.ppm") + "'") &&
+                   Catch::EndsWith("(a number in its PPM/PGM header is above 2147483647)"));
+    write_bytes(dir.file("maximum.pgm"), with_bytes("P5\n# a comment\n1 1\n4294967296\n", 2));
+    CHECK_THAT(refusal(dir.file("maximum.pgm")), Catch::Contains("above 2147483647"));
+    // 2 x 2 RGB texels need 12 bytes; stb would hand back a buffer with 6 of them never written.
+    write_bytes(dir.file("short.ppm"), with_bytes("P6\n2 2\n255\n", 6));
+    CHECK_THAT(refusal(dir.file("short.ppm")),
+               Catch::EndsWith("(its PPM/PGM data holds 6 bytes where its 2 x 2 texels need 12)"));
+    // 16 bits a sample: 24 bytes.
+    write_bytes(dir.file("short16.ppm"), with_bytes("P6 2 2 65535\n", 23));
+    CHECK_THAT(refusal(dir.file("short16.ppm")), Catch::EndsWith("holds 23 bytes where its 2 x 2 "
+                                                                 "texels need 24)"));
+    write_bytes(dir.file("full16.ppm"), with_bytes("P6 2 2 65535\n", 24));
+    CHECK_NOTHROW(rt::image_texture(dir.file("full16.ppm")));
 }

@@ -50,6 +50,8 @@ files = {
     "huge.jpg": jpeg(65535, 65535),
     "big.jpg": jpeg(10000, 10000),
     "huge.ppm": b"P6\n100000 100000\n255\n" + bytes(30),
+    "cut.ppm": b"P6\n4 4\n255\n" + bytes(30),  # 48 bytes of texels needed
+    "digits.ppm": b"P6\n99999999999 1\n255\n" + bytes(3),
     # a valid header and a zlib stream that holds one row of the 4 x 4 image
     "short_data.png": png(4, 4, b"\x00" + bytes(12)),
     # a JPEG Huffman table (DHT) of 16 x 20 = 320 codes: stb 2.27 would write past its arrays
@@ -104,6 +106,8 @@ expect_refusal textures/half.png "damaged or truncated"
 expect_refusal textures/no_end.png "damaged or truncated"
 expect_refusal textures/short_data.png "damaged or truncated"
 expect_refusal textures/bomb.png "inflates to more than 1048584 bytes where its 1 x 1 texels need 4"
+expect_refusal textures/cut.ppm "holds 30 bytes where its 4 x 4 texels need 48"
+expect_refusal textures/digits.ppm "a number in its PPM/PGM header is above 2147483647"
 expect_refusal textures/huge.png "at most 67108864 texels (2^26)" "got 100000 x 100000"
 expect_refusal textures/wide.png "at most 67108864 texels (2^26)" "got 8193 x 8192"
 expect_refusal textures/huge.jpg "at most 67108864 texels (2^26)" "got 65535 x 65535"
