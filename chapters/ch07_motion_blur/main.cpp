@@ -3,8 +3,10 @@
 // is hit where its center is at that time, C(t) = C0 + t (C1 - C0): averaging over times blurs
 // it along its path. The BVH puts the ~480 spheres in a tree of boxes, so a ray tests only the
 // few spheres in the boxes it crosses (about log n boxes instead of n spheres).
+// --scene ch06-final renders book 1's final scene (chapter 06) through the same BVH.
 #include <string>
 
+#include "book1_in_bvh.h"
 #include "bouncing_spheres.h"
 #include "common/command_line.h"
 #include "common/path_tracer.h"
@@ -12,9 +14,19 @@
 int main(int argc, char** argv) {
     rt::command_line cli("ch07_motion_blur");
     std::string accel = "bvh";
+    std::string which = "bouncing";
     cli.app()
         .add_option("--accel", accel, "bvh, or list to test every sphere (for comparison)")
         ->check(CLI::IsMember({"bvh", "list"}))
         ->capture_default_str();
-    return cli.run(argc, argv, [&] { return rt::path_trace(bouncing_spheres(accel == "bvh")); });
+    cli.app()
+        .add_option("--scene", which,
+                    "bouncing (book 2's bouncing spheres), or ch06-final (book 1's final scene)")
+        ->check(CLI::IsMember({"bouncing", "ch06-final"}))
+        ->capture_default_str();
+    return cli.run(argc, argv, [&] {
+        const bool use_bvh = accel == "bvh";
+        return rt::path_trace(which == "bouncing" ? bouncing_spheres(use_bvh)
+                                                  : book1_final_scene_in_bvh(use_bvh));
+    });
 }
