@@ -46,6 +46,9 @@ std::string pnm_problem(std::FILE* file, bool check_data) {
         if (n > INT_MAX)
             return "damaged or truncated image (a number in its PPM/PGM header is above " +
                    std::to_string(INT_MAX) + ")";
+    if (kind == '5' && max_value > 255)
+        return "16-bit PGM images are not read (stb_image 2.27 reads past its buffer converting "
+               "them to RGB)";
     // Sizes beyond 2^40 texels are the caller's limit to refuse (and would overflow below).
     if (!check_data || width < 1 || height < 1 || width * height > (std::int64_t(1) << 40))
         return "";
