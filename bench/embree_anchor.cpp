@@ -1,6 +1,6 @@
 // The Embree anchor of issue 11: the same batches of rays traced through our BVH and through
 // Embree 3, one ray at a time on one thread, closest hit, and the rays per second of each.
-//   embree_anchor --out FILE.json [--rays N] [--repeat N]
+//   embree_anchor --out FILE.json [--rays N] [--repeat N] [--note TEXT]
 // Batches (generated once, from fixed seeds, and rounded to float so both see the same rays):
 //   book1-camera   book 1's final scene (ch06 --scene final): its camera, 400 x 225, one ray
 //                  per pixel sample, ceil(N / 90,000) samples per pixel;
@@ -140,15 +140,26 @@ result measure(const batch& b, int repeat) {
     return out;
 }
 
+// s as a JSON string: quotes and backslashes escaped, control characters dropped.
+std::string json_string(const std::string& s) {
+    std::string out = "\"";
+    for (char c : s) {
+        if (c == '"' || c == '\\') out += '\\';
+        if (static_cast<unsigned char>(c) >= 0x20) out += c;
+    }
+    return out + "\"";
+}
+
 void write_json(const std::string& path, const std::vector<batch>& batches,
-                const std::vector<result>& results, int repeat) {
+                const std::vector<result>& results, int repeat, const std::string& note) {
     const std::string temporary = path + ".tmp";
     {
         std::ofstream json(temporary);
         json << std::setprecision(6);
         json << "{\n  \"program\": \"embree_anchor\",\n  \"embree\": \"" << RTC_VERSION_STRING
              << "\",\n  \"real\": \"" << (sizeof(rt::real) == 8 ? "double" : "float")
-             << "\",\n  \"threads\": 1,\n  \"repeat\": " << repeat << ",\n  \"batches\": [\n";
+             << "\",\n  \"threads\": 1,\n  \"repeat\": " << repeat
+             << ",\n  \"note\": " << json_string(note) << ",\n  \"batches\": [\n";
         for (std::size_t k = 0; k < batches.size(); ++k) {
             const batch& b  = batches[k];
             const result& r = results[k];
@@ -172,7 +183,7 @@ void write_json(const std::string& path, const std::vector<batch>& batches,
                 json << ", \"geometry_check\": {\"surface_hits\": " << r.checked
                      << ", \"agree\": " << r.check_agrees << "}";
             if (!b.tracers->geometry.left_out.empty())
-                json << ", \"left_out\": \"" << b.tracers->geometry.left_out << "\"";
+                json << ", \"left_out\": " << json_string(b.tracers->geometry.left_out);
             json << "}" << (k + 1 < batches.size() ? "," : "") << "\n";
         }
         json << "  ]\n}\n";
@@ -257,6 +268,8 @@ int main(int argc, char** argv) {
     app.add_option("--rays", rays, "Rays per batch, about")
         ->check(CLI::Range(std::size_t(1000), std::size_t(1) << 26))
         ->capture_default_str();
+    std::string note;
+    app.add_option("--note", note, "Free text kept in the JSON (the commit, the load)");
     app.add_option("--repeat", repeat, "Timings per batch and tracer; the median counts")
         ->check(CLI::Range(1, 99))
         ->capture_default_str();
@@ -290,7 +303,7 @@ int main(int argc, char** argv) {
         std::vector<result> results;
         for (const batch& b : batches) results.push_back(measure(b, repeat));
         print_table(batches, results);
-        write_json(out, batches, results, repeat);
+        write_json(out, batches, results, repeat, note);
         // Rays per second mean nothing unless both traced the same shapes: the hit counts may
         // differ only by rays that graze, and a copy of a scene must find its surface hits.
         for (std::size_t k = 0; k < batches.size(); ++k) {
