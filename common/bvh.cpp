@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <stdexcept>
 #include <string>
+#include <typeinfo>
 
 namespace rt {
 
@@ -17,35 +19,69 @@ constexpr int max_sah_depth       = 40;  // below it, median splits: at most log
 
 }  // namespace
 
+// The binary tree as build() makes it, depth first: a node's first child follows it, its second
+// child is at `offset`. pack() then turns it into the nodes and leaves that traversal reads.
+struct bvh::build_node {
+    aabb box;
+    std::uint32_t offset;  // leaf: index of its first item; interior: its second child
+    std::uint16_t count;   // items in a leaf; 0 for an interior node
+    std::uint8_t axis;     // interior: the split axis
+};
+
 struct bvh::build_item {
     aabb box;
     point3 centroid;
     std::uint32_t object;
 };
 
+namespace {
+
+// The depth of the binary tree (an iterative walk, so a deep tree cannot overflow the stack).
+template <typename Node>
+int depth_of(const std::vector<Node>& tree) {
+    int deepest = 0;
+    std::vector<std::pair<std::uint32_t, int>> pending;
+    if (!tree.empty()) pending.push_back({0, 1});
+    while (!pending.empty()) {
+        auto [index, level] = pending.back();
+        pending.pop_back();
+        deepest = std::max(deepest, level);
+        if (tree[index].count == 0) {
+            pending.push_back({index + 1, level + 1});
+            pending.push_back({tree[index].offset, level + 1});
+        }
+    }
+    return deepest;
+}
+
+}  // namespace
+
 bvh::bvh(const std::vector<bounded_object>& input) {
     std::vector<build_item> items(input.size());
     for (std::size_t i = 0; i < input.size(); ++i) {
-        const aabb& box = input[i].box;
-        items[i]        = {box, box.centroid(), std::uint32_t(i)};
+        const aabb& b = input[i].box;
+        items[i]      = {b, b.centroid(), std::uint32_t(i)};
     }
-    nodes.reserve(2 * input.size());
-    if (!items.empty()) build(items, 0, items.size(), 1);
+    std::vector<build_node> tree;
+    tree.reserve(2 * input.size());
+    if (!items.empty()) build(tree, items, 0, items.size(), 1);
 
     // Traversal keeps pending siblings on a fixed stack: the tree must fit it (build() bounds the
     // depth by about 40 + log2(n), so this can only fail beyond ~2^23 pathological objects).
-    if (depth() > max_traversal_depth)
-        throw std::logic_error("bvh: tree depth " + std::to_string(depth()) + " exceeds the stack");
+    levels        = depth_of(tree);
+    boxes_in_tree = tree.size();
+    if (levels > max_traversal_depth)
+        throw std::logic_error("bvh: tree depth " + std::to_string(levels) + " exceeds the stack");
+    if (tree.empty()) return;
 
-    objects.reserve(items.size());
-    for (const auto& item : items) objects.push_back(input[item.object].object);
-    for (const auto& object : objects) leaf_objects.push_back(object.get());
+    box  = tree[0].box;
+    root = pack(tree, 0, input, items);
 }
 
-std::uint32_t bvh::build(std::vector<build_item>& items, std::size_t begin, std::size_t end,
-                         int level) {
-    const auto index = std::uint32_t(nodes.size());
-    nodes.push_back({});
+std::uint32_t bvh::build(std::vector<build_node>& tree, std::vector<build_item>& items,
+                         std::size_t begin, std::size_t end, int level) {
+    const auto index = std::uint32_t(tree.size());
+    tree.push_back({});
     aabb bounds, centroid_bounds;
     for (std::size_t i = begin; i < end; ++i) {
         bounds          = aabb(bounds, items[i].box);
@@ -53,7 +89,7 @@ std::uint32_t bvh::build(std::vector<build_item>& items, std::size_t begin, std:
     }
     const std::size_t count = end - begin;
     auto make_leaf          = [&] {
-        nodes[index] = {bounds, std::uint32_t(begin), std::uint16_t(count), 0};
+        tree[index] = {bounds, std::uint32_t(begin), std::uint16_t(count), 0};
         return index;
     };
     if (count <= 1) return make_leaf();
@@ -65,8 +101,9 @@ std::uint32_t bvh::build(std::vector<build_item>& items, std::size_t begin, std:
         // All centroids coincide: no split can separate them; halve by index if too many.
         if (count <= max_leaf_objects) return make_leaf();
         std::size_t mid = begin + count / 2;
-        build(items, begin, mid, level + 1);
-        nodes[index] = {bounds, build(items, mid, end, level + 1), 0, std::uint8_t(axis)};
+        build(tree, items, begin, mid, level + 1);
+        const std::uint32_t second = build(tree, items, mid, end, level + 1);
+        tree[index]                = {bounds, second, 0, std::uint8_t(axis)};
         return index;
     }
     auto bin_of = [&](const build_item& item) {
@@ -132,69 +169,220 @@ std::uint32_t bvh::build(std::vector<build_item>& items, std::size_t begin, std:
                              return a.centroid[axis] < b.centroid[axis];
                          });
     }
-    build(items, begin, mid, level + 1);
-    std::uint32_t second = build(items, mid, end, level + 1);
-    nodes[index]         = {bounds, second, 0, std::uint8_t(axis)};
+    build(tree, items, begin, mid, level + 1);
+    std::uint32_t second = build(tree, items, mid, end, level + 1);
+    tree[index]          = {bounds, second, 0, std::uint8_t(axis)};
     return index;
 }
 
-bool bvh::hit(const ray& r, interval ray_t, hit_record& rec) const {
-    if (nodes.empty()) return false;
-    const vec3& d = r.direction();
-    const vec3 inv_dir(1 / d.x(), 1 / d.y(), 1 / d.z());
-    const bool dir_negative[3] = {inv_dir.x() < 0, inv_dir.y() < 0, inv_dir.z() < 0};
-
-    std::uint32_t stack[max_traversal_depth];
-    int top               = 0;
-    std::uint32_t current = 0;
-    bool hit_anything     = false;
-    while (true) {
-        const node& n = nodes[current];
-        if (n.box.hit(r.origin(), inv_dir, ray_t)) {
-            if (n.count > 0) {
-                for (std::uint32_t i = n.offset; i < n.offset + n.count; ++i) {
-                    if (leaf_objects[i]->hit(r, ray_t, rec)) {
-                        hit_anything = true;
-                        ray_t.max    = rec.t;  // only nearer hits matter from now on
-                    }
-                }
-            } else if (dir_negative[n.axis]) {
-                // The ray runs towards smaller coordinates: the second (upper) child is nearer.
-                stack[top++] = current + 1;
-                current      = n.offset;
-                continue;
+std::uint32_t bvh::pack(const std::vector<build_node>& tree, std::uint32_t index,
+                        const std::vector<bounded_object>& input,
+                        const std::vector<build_item>& items) {
+    const build_node& b = tree[index];
+    if (b.count > 0) {
+        // Sort the leaf's objects by type. Exactly these types (typeid, not dynamic_cast): a
+        // class derived from sphere may hit differently, and is asked through hit() instead.
+        leaf l{};
+        l.first        = std::uint32_t(objects.size());
+        l.first_sphere = std::uint32_t(spheres.size());
+        l.first_moving = std::uint32_t(moving_spheres.size());
+        l.first_other  = std::uint32_t(others.size());
+        std::vector<std::shared_ptr<hittable>> moving, other;
+        for (std::uint32_t i = b.offset; i < b.offset + b.count; ++i) {
+            const std::shared_ptr<hittable>& object = input[items[i].object].object;
+            const hittable& o                       = *object;
+            if (typeid(o) == typeid(sphere)) {
+                const auto& s = static_cast<const sphere&>(o);
+                spheres.push_back({s.center(), s.radius(), s.surface().get(), &s});
+                objects.push_back(object);
+                ++l.sphere_count;
+            } else if (typeid(o) == typeid(moving_sphere)) {
+                const auto& m = static_cast<const moving_sphere&>(o);
+                moving_spheres.push_back({m.path(), m.radius(), m.surface().get(), &m});
+                moving.push_back(object);
+                ++l.moving_count;
             } else {
-                stack[top++] = n.offset;
-                current      = current + 1;
-                continue;
+                others.push_back(&o);
+                other.push_back(object);
+                ++l.other_count;
             }
         }
-        if (top == 0) break;
-        current = stack[--top];
+        objects.insert(objects.end(), moving.begin(), moving.end());
+        objects.insert(objects.end(), other.begin(), other.end());
+        for (std::size_t i = l.first; i < objects.size(); ++i)
+            leaf_objects.push_back(objects[i].get());
+        leaves.push_back(l);
+        return leaf_bit | std::uint32_t(leaves.size() - 1);
+    }
+    const auto here = std::uint32_t(nodes.size());
+    nodes.push_back({});
+    const std::uint32_t first  = pack(tree, index + 1, input, items);
+    const std::uint32_t second = pack(tree, b.offset, input, items);
+    node& n                    = nodes[here];
+    const aabb &a = tree[index + 1].box, &c = tree[b.offset].box;
+    for (int axis = 0; axis < 3; ++axis) {
+        n.bounds[axis]     = real2{a.axis_interval(axis).min, c.axis_interval(axis).min};
+        n.bounds[3 + axis] = real2{a.axis_interval(axis).max, c.axis_interval(axis).max};
+    }
+    n.child[0] = first;
+    n.child[1] = second;
+    n.axis     = b.axis;
+    return here;
+}
+
+namespace {
+
+// A ray prepared for slab tests against pairs of boxes (node::bounds): per axis, the origin and
+// 1 / direction in both lanes, and which bound the ray meets first (the lower one unless it runs
+// towards smaller coordinates), as an index into bounds, so the test needs no branch on it.
+template <typename real2>
+struct slab_ray {
+    real2 origin[3], inv_dir[3];
+    int near[3], far[3];
+    bool negative[3];
+
+    explicit slab_ray(const ray& r) {
+        for (int axis = 0; axis < 3; ++axis) {
+            const real o = r.origin()[axis], inv = 1 / r.direction()[axis];
+            origin[axis]   = real2{o, o};
+            inv_dir[axis]  = real2{inv, inv};
+            negative[axis] = inv < 0;
+            near[axis]     = negative[axis] ? 3 + axis : axis;
+            far[axis]      = negative[axis] ? axis : 3 + axis;
+        }
+    }
+};
+
+// aabb::hit()'s slab test on two boxes at once. Returns which boxes the ray overlaps within
+// ray_t (bit 0: lane 0, bit 1: lane 1) and where it enters each. The same answers as
+// aabb::hit(), box by box:
+// - a NaN slab distance (0 * inf, a ray on a slab face) is no constraint: `t > acc ? t : acc`
+//   keeps acc when t is NaN, as aabb::hit's comparisons do;
+// - the far distance is widened by robust_factor; widening is increasing, so widening the
+//   nearest far distance gives the same as aabb::hit's widening each before taking the minimum;
+// - aabb::hit stops at the first empty overlap; taking all three axes first rejects the same
+//   boxes, since the overlap only shrinks.
+template <typename real2>
+[[gnu::always_inline]] inline int hit_pair(const real2 bounds[6], const slab_ray<real2>& r,
+                                           const interval& ray_t, real t_enter[2]) {
+    constexpr real widen = 1 + 4 * std::numeric_limits<real>::epsilon();  // aabb's robust_factor
+    real2 t_min          = {ray_t.min, ray_t.min};
+    real2 t_far          = {infinity, infinity};
+    for (int axis = 0; axis < 3; ++axis) {
+        const real2 t0 = (bounds[r.near[axis]] - r.origin[axis]) * r.inv_dir[axis];
+        const real2 t1 = (bounds[r.far[axis]] - r.origin[axis]) * r.inv_dir[axis];
+        t_min          = t0 > t_min ? t0 : t_min;
+        t_far          = t1 < t_far ? t1 : t_far;
+    }
+    t_far = t_far * (t_far > real2{0, 0} ? real2{widen, widen} : real2{2 - widen, 2 - widen});
+    const real2 t_max = {ray_t.max, ray_t.max};
+    t_far             = t_far < t_max ? t_far : t_max;
+    t_enter[0]        = t_min[0];
+    t_enter[1]        = t_min[1];
+    return (t_min[0] <= t_far[0] ? 1 : 0) | (t_min[1] <= t_far[1] ? 2 : 0);
+}
+
+}  // namespace
+
+bool bvh::hit_leaf(const leaf& l, const ray& r, interval& ray_t, hit_record& rec) const {
+    bool hit_anything = false;
+    // Each test asks only for hits nearer than the nearest found so far (ray_t.max).
+    for (std::uint32_t i = l.first_sphere; i < l.first_sphere + l.sphere_count; ++i) {
+        const static_sphere& s = spheres[i];
+        if (hit_sphere(s.center, s.radius, r, ray_t, rec)) {  // as sphere::hit
+            rec.mat      = s.mat;
+            rec.object   = s.object;  // [ch08]
+            ray_t.max    = rec.t;
+            hit_anything = true;
+        }
+    }
+    for (std::uint32_t i = l.first_moving; i < l.first_moving + l.moving_count; ++i) {
+        const moving_sphere_fields& m = moving_spheres[i];
+        if (hit_sphere(m.path.at(r.time()), m.radius, r, ray_t, rec)) {  // as moving_sphere::hit
+            rec.mat      = m.mat;
+            rec.object   = m.object;  // [ch08]
+            ray_t.max    = rec.t;
+            hit_anything = true;
+        }
+    }
+    for (std::uint32_t i = l.first_other; i < l.first_other + l.other_count; ++i) {
+        if (others[i]->hit(r, ray_t, rec)) {
+            ray_t.max    = rec.t;
+            hit_anything = true;
+        }
     }
     return hit_anything;
 }
 
+bool bvh::hit(const ray& r, interval ray_t, hit_record& rec) const {
+    // The root's own box is not tested: its children's boxes lie inside it, so a ray that misses
+    // it misses them too (their slab distances are rounded the same way), and a root that is a
+    // leaf is just its objects, which answer for themselves.
+    if (root & leaf_bit)
+        return !leaves.empty() && hit_leaf(leaves[root & ~leaf_bit], r, ray_t, rec);
+    const slab_ray<real2> sr(r);
+
+    // Children still to visit, with where the ray enters them: when one comes up, a hit found
+    // since then may already be nearer, and the child is skipped without another test.
+    struct pending {
+        std::uint32_t child;
+        real t_enter;
+    };
+    pending stack[max_traversal_depth];
+    int top               = 0;
+    std::uint32_t current = root;
+    bool hit_anything     = false;
+    while (true) {
+        if (current & leaf_bit) {
+            if (hit_leaf(leaves[current & ~leaf_bit], r, ray_t, rec)) hit_anything = true;
+        } else {
+            const node& n = nodes[current];
+            real t_enter[2];
+            const int hits = hit_pair(n.bounds, sr, ray_t, t_enter);
+            if (hits == 3) {
+                // Both: the nearer first. A ray running towards smaller coordinates along the
+                // split axis meets the second (upper) child first.
+                const int first = sr.negative[n.axis] ? 1 : 0;
+                stack[top++]    = {n.child[1 - first], t_enter[1 - first]};
+                current         = n.child[first];
+                continue;
+            }
+            if (hits != 0) {
+                current = n.child[hits >> 1];  // hits 1: lane 0, hits 2: lane 1
+                continue;
+            }
+        }
+        do {
+            if (top == 0) return hit_anything;
+            --top;
+        } while (stack[top].t_enter > ray_t.max);
+        current = stack[top].child;
+    }
+}
+
 // [ch14 begin]
 real bvh::transmittance(const ray& r, interval ray_t) const {
-    if (nodes.empty()) return 1;
-    const vec3& d = r.direction();
-    const vec3 inv_dir(1 / d.x(), 1 / d.y(), 1 / d.z());
+    if (leaves.empty()) return 1;
+    const slab_ray<real2> sr(r);
     std::uint32_t stack[max_traversal_depth];
     int top               = 0;
-    std::uint32_t current = 0;
+    std::uint32_t current = root;
     real fraction         = 1;
     while (true) {
-        const node& n = nodes[current];
-        if (n.box.hit(r.origin(), inv_dir, ray_t)) {
-            if (n.count > 0) {
-                for (std::uint32_t i = n.offset; i < n.offset + n.count; ++i) {
-                    fraction *= leaf_objects[i]->transmittance(r, ray_t);
-                    if (fraction == 0) return 0;
-                }
-            } else {
-                stack[top++] = n.offset;
-                current      = current + 1;
+        if (current & leaf_bit) {
+            const leaf& l    = leaves[current & ~leaf_bit];
+            const auto count = std::uint32_t(l.sphere_count + l.moving_count + l.other_count);
+            for (std::uint32_t i = l.first; i < l.first + count; ++i) {
+                fraction *= leaf_objects[i]->transmittance(r, ray_t);
+                if (fraction == 0) return 0;
+            }
+        } else {
+            const node& n = nodes[current];
+            real t_enter[2];
+            const int hits = hit_pair(n.bounds, sr, ray_t, t_enter);
+            if (hits != 0) {
+                if (hits == 3) stack[top++] = n.child[1];
+                current = n.child[hits == 2 ? 1 : 0];
                 continue;
             }
         }
@@ -204,26 +392,5 @@ real bvh::transmittance(const ray& r, interval ray_t) const {
     return fraction;
 }
 // [ch14 end]
-
-aabb bvh::bounding_box() const {
-    return nodes.empty() ? aabb() : nodes[0].box;
-}
-
-int bvh::depth() const {
-    // Iterative walk with explicit depths, the same order as traversal.
-    int deepest = 0;
-    std::vector<std::pair<std::uint32_t, int>> pending;
-    if (!nodes.empty()) pending.push_back({0, 1});
-    while (!pending.empty()) {
-        auto [index, level] = pending.back();
-        pending.pop_back();
-        deepest = std::max(deepest, level);
-        if (nodes[index].count == 0) {
-            pending.push_back({index + 1, level + 1});
-            pending.push_back({nodes[index].offset, level + 1});
-        }
-    }
-    return deepest;
-}
 
 }  // namespace rt

@@ -3,9 +3,12 @@
 // Built top-down with the surface area heuristic over binned centroids: a split's cost is
 //   C = C_traverse + sum over both sides of (area(side) / area(parent)) * count(side),
 // the expected number of object tests, since a random ray that crosses the parent crosses a
-// child box with probability area ratio. Stored flat, depth first: a node's first child follows
-// it, its second child is at `offset`. Traversal visits the nearer child first, and skips any
+// child box with probability area ratio. Traversal visits the nearer child first, and skips any
 // box farther than the nearest hit found so far.
+// Stored for speed (the tree is the same binary tree): each interior node keeps its two
+// children's boxes side by side, so one pair of vector instructions tests both (bvh.cpp); the
+// leaves keep their spheres by type, as plain arrays of fields, so testing one is an inlined
+// hit_sphere() instead of a virtual call; any other object is asked through hittable::hit.
 #pragma once
 
 #include <cstdint>
@@ -13,6 +16,7 @@
 #include <vector>
 
 #include "bounded.h"
+#include "moving_sphere.h"
 
 namespace rt {
 
@@ -22,7 +26,7 @@ class bvh : public bounded_hittable {
     explicit bvh(const std::vector<bounded_object>& objects);
 
     bool hit(const ray& r, interval ray_t, hit_record& rec) const override;
-    aabb bounding_box() const override;
+    aabb bounding_box() const override { return box; }
 
     // [ch14 begin]
     // Every leaf the ray's box test lets through, not only the nearest: a medium in front of
@@ -33,25 +37,69 @@ class bvh : public bounded_hittable {
     }
     // [ch14 end]
 
-    std::size_t node_count() const { return nodes.size(); }
+    // The binary tree's shape: its boxes (interior nodes and leaves) and its levels.
+    std::size_t node_count() const { return boxes_in_tree; }
     std::size_t object_count() const { return objects.size(); }
-    int depth() const;
+    int depth() const { return levels; }
 
   private:
-    struct node {
-        aabb box;
-        std::uint32_t offset;  // leaf: index of its first object; interior: its second child
-        std::uint16_t count;   // objects in a leaf; 0 for an interior node
-        std::uint8_t axis;     // interior: the split axis, to choose the nearer child first
-    };
+    struct build_node;
     struct build_item;
 
-    std::uint32_t build(std::vector<build_item>& items, std::size_t begin, std::size_t end,
-                        int level);
+    // Two reals side by side, one per child. GCC and Clang compile arithmetic on such a vector
+    // to single SSE2 instructions (part of every x86-64 CPU): both children for the price of one.
+    using real2 = real __attribute__((vector_size(2 * sizeof(real))));
 
-    std::vector<std::shared_ptr<hittable>> objects;  // reordered so every leaf is contiguous
-    std::vector<const hittable*> leaf_objects;       // the same, as plain pointers for traversal
+    // An interior node of the binary tree, as its two children's boxes (lane 0: the first child,
+    // lane 1: the second) and where each child is: a node index, or leaf_bit | a leaf index.
+    struct node {
+        real2 bounds[6];  // both children's box bounds: lower x, y, z, then upper x, y, z
+        std::uint32_t child[2];
+        std::uint32_t axis;  // the split axis, to visit the nearer child first
+    };
+    static constexpr std::uint32_t leaf_bit = 0x80000000u;
+
+    // A leaf: its objects from `first` on in `objects` (static spheres, then moving spheres, then
+    // the rest), and where its spheres and others start in the typed arrays.
+    struct leaf {
+        std::uint32_t first, first_sphere, first_moving, first_other;
+        std::uint16_t sphere_count, moving_count, other_count;
+    };
+    // A sphere's fields, copied from it: tested as sphere::hit() tests it (same hit_sphere()).
+    struct static_sphere {
+        point3 center;
+        real radius;
+        const material* mat;
+        const hittable* object;
+    };
+    // A moving sphere's fields, tested as moving_sphere::hit() tests it.
+    struct moving_sphere_fields {
+        center_path path;
+        real radius;
+        const material* mat;
+        const hittable* object;
+    };
+
+    std::uint32_t build(std::vector<build_node>& tree, std::vector<build_item>& items,
+                        std::size_t begin, std::size_t end, int level);
+    std::uint32_t pack(const std::vector<build_node>& tree, std::uint32_t index,
+                       const std::vector<bounded_object>& input,
+                       const std::vector<build_item>& items);
+    bool hit_leaf(const leaf& l, const ray& r, interval& ray_t, hit_record& rec) const;
+
+    aabb box;
+    std::size_t boxes_in_tree = 0;
+    int levels                = 0;
+    std::uint32_t root = leaf_bit;  // where traversal starts: a node, or a leaf (none if empty)
     std::vector<node> nodes;
+    std::vector<leaf> leaves;
+    // Each leaf's objects, contiguous, in the order its typed arrays list them: static spheres,
+    // then moving spheres, then the rest.
+    std::vector<std::shared_ptr<hittable>> objects;
+    std::vector<const hittable*> leaf_objects;  // the same, as plain pointers
+    std::vector<static_sphere> spheres;
+    std::vector<moving_sphere_fields> moving_spheres;
+    std::vector<const hittable*> others;
 };
 
 }  // namespace rt

@@ -8,11 +8,11 @@
 
 namespace rt {
 
-namespace {
-
-// The rarer half of hit_sphere(), kept out of line so the common miss stays a short function.
-[[gnu::noinline]] bool record_hit(const point3& center, real radius, const ray& r, interval ray_t,
-                                  hit_record& rec, real a, real b, real c, real a2_discriminant) {
+// Out of line on purpose (noinline): the common miss, inlined wherever spheres are tested, then
+// stays short.
+[[gnu::noinline]] bool record_sphere_hit(const point3& center, real radius, const ray& r,
+                                         interval ray_t, hit_record& rec, real a, real b, real c,
+                                         real a2_discriminant) {
     // Stable roots: q never cancels, since b and sign(b) sqrt(...) add with the same sign.
     // sqrt(b^2 - a c) = sqrt(a * discriminant) = sqrt(a2_discriminant / a).
     real q     = -(b + std::copysign(std::sqrt(a2_discriminant / a), b));
@@ -41,31 +41,6 @@ namespace {
     rec.set_face_normal(r, outward_normal);
     rec.local = outward_normal;  // [ch08] what the texture coordinates come from
     return true;
-}
-
-}  // namespace
-
-bool hit_sphere(const point3& center, real radius, const ray& r, interval ray_t, hit_record& rec) {
-    // With f = A - C: a t^2 + 2 b t + c = 0, a = b.b, b = f.b, c = f.f - r^2.
-    const vec3& d = r.direction();
-    vec3 f        = r.origin() - center;
-    real a        = dot(d, d);
-    real b        = dot(f, d);
-    real c        = dot(f, f) - radius * radius;
-
-    // Most spheres of a big list are clearly missed. The textbook discriminant b^2 - a c says so
-    // cheaply, but it cancels badly (distant or grazing spheres); trust its "miss" only when it
-    // is below minus its own rounding-error bound.
-    real bb = b * b, ac = a * c;
-    if (bb - ac < -8 * std::numeric_limits<real>::epsilon() * (bb + std::fabs(ac))) return false;
-
-    // b^2 - a c = a (r^2 - |f_perp|^2), where f_perp = f - (b/a) d is f minus its part along the
-    // ray: this form avoids subtracting two huge, nearly equal numbers. Scaled by a^2
-    // (g = a f_perp) so that it needs no division.
-    vec3 g               = a * f - b * d;
-    real a2_discriminant = radius * radius * a * a - dot(g, g);
-    if (a2_discriminant < 0) return false;
-    return record_hit(center, radius, r, ray_t, rec, a, b, c, a2_discriminant);
 }
 
 sphere::sphere(const point3& center, real radius) : center_(center), radius_(radius) {

@@ -3,16 +3,47 @@
 // Ray Tracing Gems ch. 7 (discriminant from the perpendicular distance, q = -(b' + sign(b') sqrt)).
 #pragma once
 
+#include <cmath>
+#include <limits>
 #include <memory>
 
 #include "hittable.h"
 
 namespace rt {
 
+// The rarer half of hit_sphere(): the roots and the record of a ray known to cross the sphere
+// (sphere.cpp). a, b, c and a2_discriminant are hit_sphere()'s.
+bool record_sphere_hit(const point3& center, real radius, const ray& r, interval ray_t,
+                       hit_record& rec, real a, real b, real c, real a2_discriminant);
+
 // The nearest hit of r with the sphere (center, radius) inside ray_t: fills rec's t, p, p_error,
 // normal and front_face (the caller adds the material) and returns true, or returns false and
 // leaves rec unchanged. Shared by every sphere, moving or not.
-bool hit_sphere(const point3& center, real radius, const ray& r, interval ray_t, hit_record& rec);
+// Inline, and only the common miss: a BVH leaf (chapter 07) tests its spheres in a loop, and the
+// compiler can then compute the ray's own terms (d.d) once for all of them.
+inline bool hit_sphere(const point3& center, real radius, const ray& r, interval ray_t,
+                       hit_record& rec) {
+    // With f = A - C: a t^2 + 2 b t + c = 0, a = b.b, b = f.b, c = f.f - r^2.
+    const vec3& d = r.direction();
+    vec3 f        = r.origin() - center;
+    real a        = dot(d, d);
+    real b        = dot(f, d);
+    real c        = dot(f, f) - radius * radius;
+
+    // Most spheres of a big list are clearly missed. The textbook discriminant b^2 - a c says so
+    // cheaply, but it cancels badly (distant or grazing spheres); trust its "miss" only when it
+    // is below minus its own rounding-error bound.
+    real bb = b * b, ac = a * c;
+    if (bb - ac < -8 * std::numeric_limits<real>::epsilon() * (bb + std::fabs(ac))) return false;
+
+    // b^2 - a c = a (r^2 - |f_perp|^2), where f_perp = f - (b/a) d is f minus its part along the
+    // ray: this form avoids subtracting two huge, nearly equal numbers. Scaled by a^2
+    // (g = a f_perp) so that it needs no division.
+    vec3 g               = a * f - b * d;
+    real a2_discriminant = radius * radius * a * a - dot(g, g);
+    if (a2_discriminant < 0) return false;
+    return record_sphere_hit(center, radius, r, ray_t, rec, a, b, c, a2_discriminant);
+}
 
 class sphere : public hittable {
   public:
