@@ -12,6 +12,7 @@
 
 #include "error.h"
 #include "image_io.h"
+#include "output_set.h"
 #include "run_stats.h"
 
 namespace rt {
@@ -241,6 +242,16 @@ std::optional<int> command_line::parse(int argc, char** argv) {
         return 2;
     }
     if (outputs.empty()) outputs.push_back(program + ".png");
+    // Refused now, not after the render: one run's files are written as one output_set.
+    const std::size_t files =
+        outputs.size() + (variance_output.empty() ? 0 : 1) + (stats_output.empty() ? 0 : 1);
+    if (files > std::size_t(output_set::max_files)) {
+        std::fprintf(stderr,
+                     "%s: error: --out, --variance-out and --stats-out must name at most %d files "
+                     "together, got %zu\n",
+                     program.c_str(), output_set::max_files, files);
+        return 2;
+    }
     // Written after the images, the variance would replace one of them without a word.
     for (const auto& path : outputs)
         if (!variance_output.empty() && same_file(path, variance_output)) {
@@ -261,10 +272,14 @@ int command_line::run(int argc, char** argv, const std::function<render_job()>& 
         film f                  = film::for_aspect(setting.width, job.cam->aspect_ratio);
         job.cam->initialize(f);
         render_result result = render(f, *job.cam, *job.estimator, setting);
-        for (const auto& path : outputs) write_image(path, result.mean);
-        if (!variance_output.empty()) write_image(variance_output, result.mean_variance);
+        // All or none: each file is written in full beside its target, and only when every one
+        // is does commit() rename them onto their targets. A failure or an interrupt before that
+        // leaves every old file as it was (output_set.h).
+        output_set files;
+        for (const auto& path : outputs) write_image(files, path, result.mean);
+        if (!variance_output.empty()) write_image(files, variance_output, result.mean_variance);
         if (!stats_output.empty()) {
-            // Written last: a stats file means every image of the run is complete.
+            // Added last, so renamed last: a stats file means every image of the run is complete.
             run_stats stats{program,
                             std::string(job.estimator->name()),
                             sampler_name(setting),
@@ -282,8 +297,9 @@ int command_line::run(int argc, char** argv, const std::function<render_job()>& 
             stats.settings.threads = result.threads;
             stats.process_seconds =
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            write_stats(stats_output, stats);
+            write_stats(files, stats_output, stats);
         }
+        files.commit();
         if (!setting.quiet) print_summary(program, f, setting, result);
         return 0;
     } catch (const user_error& e) {

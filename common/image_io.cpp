@@ -1,21 +1,16 @@
 #include "image_io.h"
 
 #include <stb/stb_image_write.h>
-#include <unistd.h>
 
 #include <bit>
 #include <cstdint>
-#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <functional>
-#include <sstream>
 #include <vector>
 
 #include "display_encoding.h"
 #include "error.h"
-#include "interrupt.h"
 
 namespace rt {
 
@@ -27,52 +22,28 @@ std::string extension_of(const std::string& path) {
     return fs::path(path).extension().string();
 }
 
-// Runs write(tmp) on a temporary path in the target's folder, then renames it onto `path`.
-void write_atomically(const std::string& path,
-                      const std::function<bool(const std::string&)>& write) {
-    std::string tmp = path + ".tmp." + std::to_string(::getpid());
-    removed_on_interrupt interrupted(tmp);  // Ctrl-C or kill now leaves the old file, no tmp
-    if (!write(tmp)) {
-        std::remove(tmp.c_str());
-        throw user_error("cannot write '" + path + "'");
-    }
-    std::error_code ec;
-    fs::rename(tmp, path, ec);
-    if (ec) {
-        std::remove(tmp.c_str());
-        throw user_error("cannot write '" + path + "': " + ec.message());
-    }
-}
-
-// Through our own stream: stbi_write_png ignores fwrite/fclose errors (a full disk would give a
-// truncated PNG and "success"); the stream's state catches them.
-bool write_png(const std::string& path, const image& img) {
+// Through our own sink: stbi_write_png ignores fwrite/fclose errors (a full disk would give a
+// truncated PNG and "success"); temporary_file remembers them. stb compresses the whole image,
+// then hands it over in one piece.
+void write_png(temporary_file& file, const std::string& path, const image& img) {
     std::vector<std::uint8_t> bytes(img.data().size());
     for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = to_srgb8(img.data()[i]);
-    std::ofstream out(path, std::ios::binary);
-    if (!out) return false;
     auto append = [](void* context, void* data, int size) {
-        static_cast<std::ofstream*>(context)->write(static_cast<const char*>(data), size);
+        static_cast<temporary_file*>(context)->append(data, std::size_t(size));
     };
-    if (!stbi_write_png_to_func(append, &out, img.width(), img.height(), 3, bytes.data(),
+    if (!stbi_write_png_to_func(append, &file, img.width(), img.height(), 3, bytes.data(),
                                 img.width() * 3))
-        return false;
-    out.close();
-    return bool(out);
+        throw user_error("cannot write '" + path + "': the PNG encoder failed (out of memory)");
 }
 
-bool write_pfm(const std::string& path, const image& img) {
+void write_pfm(temporary_file& file, const image& img) {
     static_assert(std::endian::native == std::endian::little, "PFM writer assumes little-endian");
-    std::ofstream out(path, std::ios::binary);
-    if (!out) return false;
-    out << "PF\n" << img.width() << ' ' << img.height() << "\n-1.0\n";
+    const std::string header =
+        "PF\n" + std::to_string(img.width()) + ' ' + std::to_string(img.height()) + "\n-1.0\n";
+    file.append(header.data(), header.size());
     const std::size_t row_floats = std::size_t(img.width()) * 3;
-    for (int y = img.height() - 1; y >= 0; --y) {  // PFM stores the bottom row first
-        const float* row = img.data().data() + std::size_t(y) * row_floats;
-        out.write(reinterpret_cast<const char*>(row), std::streamsize(row_floats * sizeof(float)));
-    }
-    out.close();
-    return bool(out);
+    for (int y = img.height() - 1; y >= 0; --y)  // PFM stores the bottom row first
+        file.append(img.data().data() + std::size_t(y) * row_floats, row_floats * sizeof(float));
 }
 
 }  // namespace
@@ -90,12 +61,18 @@ std::string output_path_problem(const std::string& path) {
     return "";
 }
 
-void write_image(const std::string& path, const image& img) {
+void write_image(output_set& outputs, const std::string& path, const image& img) {
     if (auto problem = output_path_problem(path); !problem.empty()) throw user_error(problem);
     if (extension_of(path) == ".png")
-        write_atomically(path, [&](const std::string& tmp) { return write_png(tmp, img); });
+        outputs.add(path, [&](temporary_file& file) { write_png(file, path, img); });
     else
-        write_atomically(path, [&](const std::string& tmp) { return write_pfm(tmp, img); });
+        outputs.add(path, [&](temporary_file& file) { write_pfm(file, img); });
+}
+
+void write_image(const std::string& path, const image& img) {
+    output_set one;
+    write_image(one, path, img);
+    one.commit();
 }
 
 image read_pfm(const std::string& path) {

@@ -1,12 +1,9 @@
 #include "run_stats.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <charconv>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include "error.h"
@@ -114,20 +111,11 @@ std::string stats_path_problem(const std::string& path) {
     return "";
 }
 
-void write_stats(const std::string& path, const run_stats& stats) {
+void write_stats(output_set& outputs, const std::string& path, const run_stats& stats) {
     if (auto problem = stats_path_problem(path); !problem.empty()) throw user_error(problem);
     fs::path folder  = fs::path(path).parent_path();
     std::string text = to_json(stats, folder.empty() ? "." : folder.string());
-    std::string tmp  = path + ".tmp." + std::to_string(::getpid());
-    std::ofstream out(tmp, std::ios::binary);
-    out << text;
-    out.close();
-    std::error_code ec;
-    if (out) fs::rename(tmp, path, ec);
-    if (!out || ec) {
-        std::remove(tmp.c_str());
-        throw user_error("cannot write '" + path + "'" + (ec ? ": " + ec.message() : ""));
-    }
+    outputs.add(path, [&](temporary_file& file) { file.append(text.data(), text.size()); });
 }
 
 }  // namespace rt

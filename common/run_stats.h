@@ -1,8 +1,9 @@
 // The record of one run, for machines: --stats-out FILE.json. Chapter 01.
 // The tools (tools/benchmark, tools/render-report, tools/merge, and any later convergence
 // driver) read this file instead of the progress line on stderr, which is for people. One JSON
-// object; README.md ("Every chapter's command line") lists its keys. Written like the images:
-// to a temporary file, renamed onto FILE only when complete.
+// object; README.md ("Every chapter's command line") lists its keys. Written like the images,
+// into the run's output_set (output_set.h), and added after them: it is renamed onto FILE last,
+// so its presence means every image of the run is complete.
 #pragma once
 
 #include <string>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "film.h"
+#include "output_set.h"
 #include "render.h"
 
 namespace rt {
@@ -39,8 +41,8 @@ std::string to_json(const run_stats& stats, const std::string& relative_to);
 // Empty when `path` can be written as a stats file (ends in .json, existing folder); else why.
 std::string stats_path_problem(const std::string& path);
 
-// Writes to_json(stats) to path, atomically; paths in it are relative to path's folder. Throws
-// user_error on failure.
-void write_stats(const std::string& path, const run_stats& stats);
+// Writes to_json(stats) into `outputs` (onto path at outputs.commit()); paths in it are relative
+// to path's folder. Add it after the images. Throws user_error naming path and the reason.
+void write_stats(output_set& outputs, const std::string& path, const run_stats& stats);
 
 }  // namespace rt

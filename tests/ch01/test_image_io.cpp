@@ -183,14 +183,17 @@ TEST_CASE("image_io: an existing file is replaced on success and left intact on 
         CHECK(dir.entries() == std::vector<std::string>{name});
 
         // Failure: the temporary file cannot be created (a folder, not empty, sits where
-        // write_image puts it: path + ".tmp." + pid, see image_io.cpp). The write must throw
-        // and leave the old file as it was.
+        // write_image puts it: path + ".tmp." + pid + ".0", see output_set.h). The write must
+        // throw, name the file and the reason, and leave the old file as it was.
         write_bytes(path, "old contents");
-        const std::string blocker = path + ".tmp." + std::to_string(::getpid());
+        const std::string blocker = path + ".tmp." + std::to_string(::getpid()) + ".0";
         fs::create_directory(blocker);
         write_bytes(blocker + "/keep", "x");
-        CHECK_THROWS_AS(rt::write_image(path, test_image(3, 2)), rt::user_error);
+        CHECK_THROWS_WITH(
+            rt::write_image(path, test_image(3, 2)),
+            "cannot write '" + path + "': Is a directory (creating '" + blocker + "')");
         CHECK(read_bytes(path) == "old contents");
+        CHECK(read_bytes(blocker + "/keep") == "x");
         fs::remove_all(blocker);
         fs::remove(path);
     }

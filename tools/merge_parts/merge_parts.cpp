@@ -22,6 +22,7 @@
 #include "common/error.h"
 #include "common/image.h"
 #include "common/image_io.h"
+#include "common/output_set.h"
 #include "common/render.h"
 
 namespace {
@@ -197,8 +198,10 @@ int merge(int width, int height, int spp, const std::vector<std::vector<std::str
     }
     image mean(width, height), variance(width, height);
     for (auto& [key, group] : windows) combine(group, with_variance, mean, variance);
-    for (const auto& path : outputs) rt::write_image(path, mean);
-    if (with_variance) rt::write_image(variance_output, variance);
+    rt::output_set files;  // all or none, as a chapter's run (common/output_set.h)
+    for (const auto& path : outputs) rt::write_image(files, path, mean);
+    if (with_variance) rt::write_image(files, variance_output, variance);
+    files.commit();
     return 0;
 }
 
