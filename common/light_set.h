@@ -33,7 +33,8 @@ class light_set {
 
     // The density of drawing wi from ref by aiming at the light that `hit` lies on (0 when that
     // object is not one of the lights, or is a copy of one placed by an instance), choice
-    // included: the light's share of an MIS weight.
+    // included: the light's share of an MIS weight. ref must be the origin of the ray that made
+    // `hit` (not the surface point it was spawned from), so the shape, asked again, agrees.
     real pdf_of_hit(const point3& ref, const vec3& wi, const hit_record& hit) const;
 
     // The same for a ray that escaped to the sky.

@@ -95,7 +95,9 @@ color mis_tracer::radiance(const ray& camera_ray, sampler& s, int max_depth) con
         if (!surface.scatter(r, rec, s, attenuation, scattered)) break;
         weigh_emission = evaluable;
         if (evaluable) material_pdf = surface.pdf(r, rec, unit_vector(scattered.direction()));
-        last_vertex = rec.p;
+        // Where the scattered ray really starts (off the surface): light_set::pdf_of_hit asks
+        // the light's shape again along this same ray, and must find the same point.
+        last_vertex = scattered.origin();
         throughput  = throughput * attenuation;
         r           = scattered;
 
