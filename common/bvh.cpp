@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -150,8 +151,17 @@ std::uint32_t bvh::build(std::vector<build_node>& tree, std::vector<build_item>&
             best_split = b;
         }
     }
-    // A leaf costs one test per object: keep it when no split is cheaper.
-    if (count <= max_leaf_objects && best_cost >= real(count)) return make_leaf();
+    // A leaf costs one test per object: keep it when no split is cheaper. The split's price above
+    // sees only the two halves' boxes; split further, though, a few objects end up each in its
+    // own box of one wide node (bvh.h), which costs one node test and a test of each object
+    // whose own box the ray crosses. That is far cheaper when the objects' boxes are much smaller
+    // than their union: the walls of a room, each a flat box, whose union is the whole room.
+    if (count <= max_leaf_objects) {
+        real own_boxes = 0;
+        for (std::size_t i = begin; i < end; ++i) own_boxes += items[i].box.half_area();
+        const real singles = traversal_cost + own_boxes / parent_area;
+        if (std::min(best_cost, singles) >= real(count)) return make_leaf();
+    }
 
     auto first = items.begin() + std::ptrdiff_t(begin), last = items.begin() + std::ptrdiff_t(end);
     std::size_t mid;
@@ -175,116 +185,164 @@ std::uint32_t bvh::build(std::vector<build_node>& tree, std::vector<build_item>&
     return index;
 }
 
+std::uint32_t bvh::pack_leaf(const build_node& b, const std::vector<bounded_object>& input,
+                             const std::vector<build_item>& items) {
+    // Sort the leaf's objects by type. Exactly these types (typeid, not dynamic_cast): a class
+    // derived from sphere may hit differently, and is asked through hit() instead.
+    leaf l{};
+    l.first        = std::uint32_t(objects.size());
+    l.first_sphere = std::uint32_t(spheres.size());
+    l.first_moving = std::uint32_t(moving_spheres.size());
+    l.first_other  = std::uint32_t(others.size());
+    std::vector<std::shared_ptr<hittable>> moving, other;
+    for (std::uint32_t i = b.offset; i < b.offset + b.count; ++i) {
+        const std::shared_ptr<hittable>& object = input[items[i].object].object;
+        const hittable& o                       = *object;
+        if (typeid(o) == typeid(sphere)) {
+            const auto& s = static_cast<const sphere&>(o);
+            spheres.push_back({s.center(), s.radius(), s.surface().get(), &s});
+            objects.push_back(object);
+            ++l.sphere_count;
+        } else if (typeid(o) == typeid(moving_sphere)) {
+            const auto& m = static_cast<const moving_sphere&>(o);
+            moving_spheres.push_back({m.path(), m.radius(), m.surface().get(), &m});
+            moving.push_back(object);
+            ++l.moving_count;
+        } else {
+            others.push_back(&o);
+            other.push_back(object);
+            ++l.other_count;
+        }
+    }
+    objects.insert(objects.end(), moving.begin(), moving.end());
+    objects.insert(objects.end(), other.begin(), other.end());
+    for (std::size_t i = l.first; i < objects.size(); ++i) leaf_objects.push_back(objects[i].get());
+    leaves.push_back(l);
+    return leaf_bit | std::uint32_t(leaves.size() - 1);
+}
+
 std::uint32_t bvh::pack(const std::vector<build_node>& tree, std::uint32_t index,
                         const std::vector<bounded_object>& input,
                         const std::vector<build_item>& items) {
     const build_node& b = tree[index];
-    if (b.count > 0) {
-        // Sort the leaf's objects by type. Exactly these types (typeid, not dynamic_cast): a
-        // class derived from sphere may hit differently, and is asked through hit() instead.
-        leaf l{};
-        l.first        = std::uint32_t(objects.size());
-        l.first_sphere = std::uint32_t(spheres.size());
-        l.first_moving = std::uint32_t(moving_spheres.size());
-        l.first_other  = std::uint32_t(others.size());
-        std::vector<std::shared_ptr<hittable>> moving, other;
-        for (std::uint32_t i = b.offset; i < b.offset + b.count; ++i) {
-            const std::shared_ptr<hittable>& object = input[items[i].object].object;
-            const hittable& o                       = *object;
-            if (typeid(o) == typeid(sphere)) {
-                const auto& s = static_cast<const sphere&>(o);
-                spheres.push_back({s.center(), s.radius(), s.surface().get(), &s});
-                objects.push_back(object);
-                ++l.sphere_count;
-            } else if (typeid(o) == typeid(moving_sphere)) {
-                const auto& m = static_cast<const moving_sphere&>(o);
-                moving_spheres.push_back({m.path(), m.radius(), m.surface().get(), &m});
-                moving.push_back(object);
-                ++l.moving_count;
-            } else {
-                others.push_back(&o);
-                other.push_back(object);
-                ++l.other_count;
-            }
+    if (b.count > 0) return pack_leaf(b, input, items);
+
+    // The lanes: each child of this binary node, or that child's two children if it has any,
+    // with the path that leads to it (first or second child, then first or second grandchild)
+    // and the axes that order those choices.
+    struct lane {
+        std::uint32_t binary;  // index in tree
+        int top, second;       // 0: first child, 1: second; second is 0 for a leaf child
+        int child_axis;        // the child's split axis (or -1 for a leaf child)
+    };
+    std::vector<lane> lanes;
+    const std::uint32_t children[2] = {index + 1, b.offset};
+    for (int top = 0; top < 2; ++top) {
+        const build_node& c = tree[children[top]];
+        if (c.count > 0) {
+            lanes.push_back({children[top], top, 0, -1});
+        } else {
+            lanes.push_back({children[top] + 1, top, 0, c.axis});
+            lanes.push_back({c.offset, top, 1, c.axis});
         }
-        objects.insert(objects.end(), moving.begin(), moving.end());
-        objects.insert(objects.end(), other.begin(), other.end());
-        for (std::size_t i = l.first; i < objects.size(); ++i)
-            leaf_objects.push_back(objects[i].get());
-        leaves.push_back(l);
-        return leaf_bit | std::uint32_t(leaves.size() - 1);
     }
+
     const auto here = std::uint32_t(nodes.size());
     nodes.push_back({});
-    const std::uint32_t first  = pack(tree, index + 1, input, items);
-    const std::uint32_t second = pack(tree, b.offset, input, items);
-    node& n                    = nodes[here];
-    const aabb &a = tree[index + 1].box, &c = tree[b.offset].box;
+    std::uint32_t child[4] = {0, 0, 0, 0};
+    for (std::size_t k = 0; k < lanes.size(); ++k)
+        child[k] = pack(tree, lanes[k].binary, input, items);
+
+    node& n = nodes[here];
+    const aabb nothing;  // unused lanes: an empty box, which every ray misses
     for (int axis = 0; axis < 3; ++axis) {
-        n.bounds[axis]     = real2{a.axis_interval(axis).min, c.axis_interval(axis).min};
-        n.bounds[3 + axis] = real2{a.axis_interval(axis).max, c.axis_interval(axis).max};
+        real lower[4], upper[4];
+        for (std::size_t k = 0; k < 4; ++k) {
+            const aabb& box_k = k < lanes.size() ? tree[lanes[k].binary].box : nothing;
+            lower[k]          = box_k.axis_interval(axis).min;
+            upper[k]          = box_k.axis_interval(axis).max;
+        }
+        n.bounds[axis]     = real4{lower[0], lower[1], lower[2], lower[3]};
+        n.bounds[3 + axis] = real4{upper[0], upper[1], upper[2], upper[3]};
     }
-    n.child[0] = first;
-    n.child[1] = second;
-    n.axis     = b.axis;
+    for (int k = 0; k < 4; ++k) n.child[k] = child[k];
+    // The binary tree's visiting order: at each level the first child first, unless the ray runs
+    // towards smaller coordinates on that level's split axis. Unused lanes go last.
+    for (int octant = 0; octant < 8; ++octant) {
+        auto flip = [&](int axis) { return axis >= 0 && (octant >> axis & 1) ? 1 : 0; };
+        std::array<int, 4> rank{4, 5, 6, 7}, lane_of{};
+        for (std::size_t k = 0; k < lanes.size(); ++k)
+            rank[k] = 2 * (lanes[k].top ^ flip(b.axis)) +
+                      (lanes[k].child_axis < 0 ? 0 : lanes[k].second ^ flip(lanes[k].child_axis));
+        for (int k = 0; k < 4; ++k) lane_of[k] = k;
+        std::sort(lane_of.begin(), lane_of.end(), [&](int x, int y) { return rank[x] < rank[y]; });
+        n.order[octant] =
+            std::uint8_t(lane_of[0] | lane_of[1] << 2 | lane_of[2] << 4 | lane_of[3] << 6);
+    }
     return here;
 }
 
 namespace {
 
-// A ray prepared for slab tests against pairs of boxes (node::bounds): per axis, the origin and
-// 1 / direction in both lanes, and which bound the ray meets first (the lower one unless it runs
-// towards smaller coordinates), as an index into bounds, so the test needs no branch on it.
-template <typename real2>
+// A ray prepared for slab tests against a wide node's boxes (node::bounds): per axis, the
+// origin and 1 / direction in every lane, and which bound the ray meets first (the lower one
+// unless it runs towards smaller coordinates), as an index into bounds, so the test needs no
+// branch on it; and the ray's octant, which picks the visiting order.
+template <typename real4>
 struct slab_ray {
-    real2 origin[3], inv_dir[3];
+    real4 origin[3], inv_dir[3];
     int near[3], far[3];
-    bool negative[3];
+    int octant = 0;
 
     explicit slab_ray(const ray& r) {
         for (int axis = 0; axis < 3; ++axis) {
             const real o = r.origin()[axis], inv = 1 / r.direction()[axis];
-            origin[axis]   = real2{o, o};
-            inv_dir[axis]  = real2{inv, inv};
-            negative[axis] = inv < 0;
-            near[axis]     = negative[axis] ? 3 + axis : axis;
-            far[axis]      = negative[axis] ? axis : 3 + axis;
+            origin[axis]        = real4{o, o, o, o};
+            inv_dir[axis]       = real4{inv, inv, inv, inv};
+            const bool negative = inv < 0;
+            near[axis]          = negative ? 3 + axis : axis;
+            far[axis]           = negative ? axis : 3 + axis;
+            octant |= negative ? 1 << axis : 0;
         }
     }
 };
 
-// aabb::hit()'s slab test on two boxes at once. Returns which boxes the ray overlaps within
-// ray_t (bit 0: lane 0, bit 1: lane 1) and where it enters each. The same answers as
-// aabb::hit(), box by box:
+// aabb::hit()'s slab test on four boxes at once. Returns which boxes the ray overlaps within
+// ray_t (bit k: lane k) and where it enters each. The same answers as aabb::hit(), box by box:
 // - a NaN slab distance (0 * inf, a ray on a slab face) is no constraint: `t > acc ? t : acc`
 //   keeps acc when t is NaN, as aabb::hit's comparisons do;
 // - the far distance is widened by robust_factor; widening is increasing, so widening the
 //   nearest far distance gives the same as aabb::hit's widening each before taking the minimum;
 // - aabb::hit stops at the first empty overlap; taking all three axes first rejects the same
 //   boxes, since the overlap only shrinks.
-template <typename real2>
-[[gnu::always_inline]] inline int hit_pair(const real2 bounds[6], const slab_ray<real2>& r,
-                                           const interval& ray_t, real t_enter[2]) {
+template <typename real4>
+[[gnu::always_inline]] inline unsigned hit_four(const real4 bounds[6], const slab_ray<real4>& r,
+                                                const interval& ray_t, real t_enter[4]) {
     constexpr real widen = 1 + 4 * std::numeric_limits<real>::epsilon();  // aabb's robust_factor
-    real2 t_min          = {ray_t.min, ray_t.min};
-    real2 t_far          = {infinity, infinity};
+    real4 t_min          = {ray_t.min, ray_t.min, ray_t.min, ray_t.min};
+    real4 t_far          = {infinity, infinity, infinity, infinity};
     for (int axis = 0; axis < 3; ++axis) {
-        const real2 t0 = (bounds[r.near[axis]] - r.origin[axis]) * r.inv_dir[axis];
-        const real2 t1 = (bounds[r.far[axis]] - r.origin[axis]) * r.inv_dir[axis];
+        const real4 t0 = (bounds[r.near[axis]] - r.origin[axis]) * r.inv_dir[axis];
+        const real4 t1 = (bounds[r.far[axis]] - r.origin[axis]) * r.inv_dir[axis];
         t_min          = t0 > t_min ? t0 : t_min;
         t_far          = t1 < t_far ? t1 : t_far;
     }
-    t_far = t_far * (t_far > real2{0, 0} ? real2{widen, widen} : real2{2 - widen, 2 - widen});
-    const real2 t_max = {ray_t.max, ray_t.max};
+    const real4 zero = {0, 0, 0, 0};
+    t_far *= t_far > zero ? real4{widen, widen, widen, widen}
+                          : real4{2 - widen, 2 - widen, 2 - widen, 2 - widen};
+    const real4 t_max = {ray_t.max, ray_t.max, ray_t.max, ray_t.max};
     t_far             = t_far < t_max ? t_far : t_max;
-    t_enter[0]        = t_min[0];
-    t_enter[1]        = t_min[1];
-    return (t_min[0] <= t_far[0] ? 1 : 0) | (t_min[1] <= t_far[1] ? 2 : 0);
+    const auto inside = t_min <= t_far;  // each lane: all bits set (-1) or none
+    for (int k = 0; k < 4; ++k) t_enter[k] = t_min[k];
+    return unsigned(inside[0] & 1) | unsigned(inside[1] & 2) | unsigned(inside[2] & 4) |
+           unsigned(inside[3] & 8);
 }
 
 }  // namespace
 
-bool bvh::hit_leaf(const leaf& l, const ray& r, interval& ray_t, hit_record& rec) const {
+// Inlined into the traversal (always_inline), where it runs once or twice per ray.
+[[gnu::always_inline]] inline bool bvh::hit_leaf(const leaf& l, const ray& r, interval& ray_t,
+                                                 hit_record& rec) const {
     bool hit_anything = false;
     // Each test asks only for hits nearer than the nearest found so far (ray_t.max).
     for (std::uint32_t i = l.first_sphere; i < l.first_sphere + l.sphere_count; ++i) {
@@ -314,21 +372,29 @@ bool bvh::hit_leaf(const leaf& l, const ray& r, interval& ray_t, hit_record& rec
     return hit_anything;
 }
 
-bool bvh::hit(const ray& r, interval ray_t, hit_record& rec) const {
+// Compiled twice, for any x86-64 and for AVX2, the faster chosen when the program starts (GCC's
+// function multiversioning, which a virtual function cannot have: hence hit(), below, calls
+// this). AVX2 tests four double boxes in one instruction. The two give the same answers: the box
+// test only subtracts, multiplies and compares, and AVX2 has no fused multiply-add that could
+// round differently (that is the separate FMA extension, deliberately not targeted).
+[[gnu::target_clones("avx2", "default")]] bool bvh::closest_hit(const ray& r, interval ray_t,
+                                                                hit_record& rec) const {
     // The root's own box is not tested: its children's boxes lie inside it, so a ray that misses
     // it misses them too (their slab distances are rounded the same way), and a root that is a
     // leaf is just its objects, which answer for themselves.
     if (root & leaf_bit)
         return !leaves.empty() && hit_leaf(leaves[root & ~leaf_bit], r, ray_t, rec);
-    const slab_ray<real2> sr(r);
+    const slab_ray<real4> sr(r);
 
     // Children still to visit, with where the ray enters them: when one comes up, a hit found
     // since then may already be nearer, and the child is skipped without another test.
+    // A wide node leaves at most 3 of its children waiting, and the wide tree has at most half
+    // the binary tree's levels.
     struct pending {
         std::uint32_t child;
         real t_enter;
     };
-    pending stack[max_traversal_depth];
+    pending stack[2 * max_traversal_depth];
     int top               = 0;
     std::uint32_t current = root;
     bool hit_anything     = false;
@@ -337,18 +403,20 @@ bool bvh::hit(const ray& r, interval ray_t, hit_record& rec) const {
             if (hit_leaf(leaves[current & ~leaf_bit], r, ray_t, rec)) hit_anything = true;
         } else {
             const node& n = nodes[current];
-            real t_enter[2];
-            const int hits = hit_pair(n.bounds, sr, ray_t, t_enter);
-            if (hits == 3) {
-                // Both: the nearer first. A ray running towards smaller coordinates along the
-                // split axis meets the second (upper) child first.
-                const int first = sr.negative[n.axis] ? 1 : 0;
-                stack[top++]    = {n.child[1 - first], t_enter[1 - first]};
-                current         = n.child[first];
+            real t_enter[4];
+            const unsigned hits = hit_four(n.bounds, sr, ray_t, t_enter);
+            if ((hits & (hits - 1)) == 0 && hits != 0) {
+                current = n.child[std::countr_zero(hits)];  // one child: go there
                 continue;
             }
             if (hits != 0) {
-                current = n.child[hits >> 1];  // hits 1: lane 0, hits 2: lane 1
+                // Several: wait for them in reverse visiting order, then take the first.
+                const unsigned order = n.order[sr.octant];
+                for (int i = 3; i >= 0; --i) {
+                    const unsigned k = order >> (2 * i) & 3u;
+                    if (hits >> k & 1u) stack[top++] = {n.child[k], t_enter[k]};
+                }
+                current = stack[--top].child;
                 continue;
             }
         }
@@ -360,11 +428,17 @@ bool bvh::hit(const ray& r, interval ray_t, hit_record& rec) const {
     }
 }
 
+bool bvh::hit(const ray& r, interval ray_t, hit_record& rec) const {
+    return closest_hit(r, ray_t, rec);
+}
+
 // [ch14 begin]
 real bvh::transmittance(const ray& r, interval ray_t) const {
     if (leaves.empty()) return 1;
-    const slab_ray<real2> sr(r);
-    std::uint32_t stack[max_traversal_depth];
+    // Every child the box test lets through, in the binary tree's first-child-first order (octant
+    // 0), so that the fractions multiply in the same order whatever the ray's direction.
+    const slab_ray<real4> sr(r);
+    std::uint32_t stack[2 * max_traversal_depth];
     int top               = 0;
     std::uint32_t current = root;
     real fraction         = 1;
@@ -378,12 +452,11 @@ real bvh::transmittance(const ray& r, interval ray_t) const {
             }
         } else {
             const node& n = nodes[current];
-            real t_enter[2];
-            const int hits = hit_pair(n.bounds, sr, ray_t, t_enter);
-            if (hits != 0) {
-                if (hits == 3) stack[top++] = n.child[1];
-                current = n.child[hits == 2 ? 1 : 0];
-                continue;
+            real t_enter[4];
+            const unsigned hits = hit_four(n.bounds, sr, ray_t, t_enter);
+            for (int i = 3; i >= 0; --i) {
+                const unsigned k = unsigned(n.order[0]) >> (2 * i) & 3u;
+                if (hits >> k & 1u) stack[top++] = n.child[k];
             }
         }
         if (top == 0) break;

@@ -5,10 +5,12 @@
 // the expected number of object tests, since a random ray that crosses the parent crosses a
 // child box with probability area ratio. Traversal visits the nearer child first, and skips any
 // box farther than the nearest hit found so far.
-// Stored for speed (the tree is the same binary tree): each interior node keeps its two
-// children's boxes side by side, so one pair of vector instructions tests both (bvh.cpp); the
-// leaves keep their spheres by type, as plain arrays of fields, so testing one is an inlined
-// hit_sphere() instead of a virtual call; any other object is asked through hittable::hit.
+// Stored for speed, as the same binary tree with every other level folded into its parent: a
+// wide node holds up to four children's boxes side by side, tested together by vector
+// instructions, and is visited in the binary tree's own order, so the BVH tests the same objects
+// in the same order as a binary one would. The leaves keep their spheres by type, as plain
+// arrays of fields, so testing one is an inlined hit_sphere() instead of a virtual call; any
+// other object is asked through hittable::hit.
 #pragma once
 
 #include <cstdint>
@@ -46,16 +48,24 @@ class bvh : public bounded_hittable {
     struct build_node;
     struct build_item;
 
-    // Two reals side by side, one per child. GCC and Clang compile arithmetic on such a vector
-    // to single SSE2 instructions (part of every x86-64 CPU): both children for the price of one.
-    using real2 = real __attribute__((vector_size(2 * sizeof(real))));
+    // Four reals side by side, one per child of a wide node. GCC and Clang compile arithmetic on
+    // such a vector to SIMD instructions: two SSE2 instructions for four doubles on any x86-64,
+    // one with AVX2 (bvh::hit is also compiled for AVX2, chosen at run time).
+    using real4 = real __attribute__((vector_size(4 * sizeof(real))));
 
-    // An interior node of the binary tree, as its two children's boxes (lane 0: the first child,
-    // lane 1: the second) and where each child is: a node index, or leaf_bit | a leaf index.
-    struct node {
-        real2 bounds[6];  // both children's box bounds: lower x, y, z, then upper x, y, z
-        std::uint32_t child[2];
-        std::uint32_t axis;  // the split axis, to visit the nearer child first
+    // A wide node: the binary tree's node with its children's children pulled up, so that one
+    // test covers up to four boxes. The binary tree's inner boxes are then never tested: they
+    // contain their children's, so a ray that misses one misses its children too. Each lane is a
+    // child: a wide node's index, or leaf_bit | a leaf index; unused lanes hold an empty box.
+    // Aligned to a real4 on purpose: GCC gives a 32-byte vector only 16-byte alignment where
+    // the build does not enable AVX, and the AVX2 version's aligned loads would then fault.
+    struct alignas(sizeof(real4)) node {
+        real4 bounds[6];  // the children's box bounds: lower x, y, z, then upper x, y, z
+        std::uint32_t child[4];
+        // The order in which the binary tree would visit the children, nearer child first at
+        // each of its two levels, for each octant of ray directions (bit k set: the ray runs
+        // towards smaller coordinates on axis k): lane of the i-th visit in bits 2i and 2i + 1.
+        std::uint8_t order[8];
     };
     static constexpr std::uint32_t leaf_bit = 0x80000000u;
 
@@ -85,7 +95,10 @@ class bvh : public bounded_hittable {
     std::uint32_t pack(const std::vector<build_node>& tree, std::uint32_t index,
                        const std::vector<bounded_object>& input,
                        const std::vector<build_item>& items);
+    std::uint32_t pack_leaf(const build_node& b, const std::vector<bounded_object>& input,
+                            const std::vector<build_item>& items);
     bool hit_leaf(const leaf& l, const ray& r, interval& ray_t, hit_record& rec) const;
+    bool closest_hit(const ray& r, interval ray_t, hit_record& rec) const;
 
     aabb box;
     std::size_t boxes_in_tree = 0;
