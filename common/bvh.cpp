@@ -377,8 +377,12 @@ template <typename real4>
 // this). AVX2 tests four double boxes in one instruction. The two give the same answers: the box
 // test only subtracts, multiplies and compares, and AVX2 has no fused multiply-add that could
 // round differently (that is the separate FMA extension, deliberately not targeted).
-[[gnu::target_clones("avx2", "default")]] bool bvh::closest_hit(const ray& r, interval ray_t,
-                                                                hit_record& rec) const {
+#if defined(__x86_64__)
+#define RT_ALSO_FOR_AVX2 [[gnu::target_clones("avx2", "default")]]
+#else
+#define RT_ALSO_FOR_AVX2  // other processors: one version, whatever vectors the build targets
+#endif
+RT_ALSO_FOR_AVX2 bool bvh::closest_hit(const ray& r, interval ray_t, hit_record& rec) const {
     // The root's own box is not tested: its children's boxes lie inside it, so a ray that misses
     // it misses them too (their slab distances are rounded the same way), and a root that is a
     // leaf is just its objects, which answer for themselves.
