@@ -36,7 +36,8 @@ fi
     fail "a missing reference must give one line naming it, got: $(cat err.txt)"
 [ ! -e out ] || fail "a refused run wrote $(ls out)"
 
-"$convergence" ch10 "${common[@]}" --make-reference --spp 16 2>/dev/null
+"$convergence" ch10 "${common[@]}" --make-reference --spp 16 2>log.txt ||
+    fail "making the reference failed: $(tail -3 log.txt)"
 [ -s refs/ch10.pfm ] && [ -s refs/ch10.json ] || fail "no reference written: $(ls refs)"
 before=$(md5sum refs/ch10.pfm refs/ch10.json)
 
@@ -49,7 +50,8 @@ fi
 [ "$code" -eq 2 ] && [ "$(wc -l <err.txt)" -eq 1 ] && grep -q "mis:halton" err.txt ||
     fail "a bad method gave exit code $code and: $(cat err.txt)"
 
-"$convergence" ch10 "${common[@]}" --max-spp 8 --stop spp --out-dir out 2>/dev/null
+"$convergence" ch10 "${common[@]}" --max-spp 8 --stop spp --out-dir out 2>log.txt ||
+    fail "a normal run failed: $(tail -3 log.txt)"
 [ "$(md5sum refs/ch10.pfm refs/ch10.json)" = "$before" ] || fail "a normal run changed the reference"
 "$exe" --scene ch10 --integrator mis --sampler sobol --width 32 --spp 8 --seed 1 --quiet \
     --out mis8.pfm
