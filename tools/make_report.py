@@ -104,6 +104,79 @@ def benchmark_section():
     return out
 
 
+# The scenes of the "Speed against error" section, as tools/render-report measures them with
+# tools/convergence (report/convergence/SCENE.*), and what each is.
+CONVERGENCE_SCENES = [("ch10", "book 2's simple light"), ("ch11", "the Cornell box"),
+                      ("ch12", "the Cornell smoke"), ("ch13", "book 2's final scene")]
+# The issue's targets: the Cornell box's RMSE within 1.7 s (1/40 of the book's code's 66.7 s),
+# the smoke's speed-up at the baseline's 1024-spp error.
+CORNELL_RMSE, CORNELL_SECONDS, SMOKE_SPEED_UP = 0.0246, 1.7, 10
+
+
+def best_method(summary, key):
+    """The method with the least seconds by key(method), and those seconds (None if none)."""
+    timed = [(key(m), m) for m in summary["methods"] if key(m) is not None]
+    return min(timed, key=lambda t: t[0], default=(None, None))
+
+
+def convergence_section():
+    folder = os.path.join(REPORT, "convergence")
+    runs = []
+    for scene, what in CONVERGENCE_SCENES:
+        path = os.path.join(folder, f"{scene}.json")
+        if os.path.exists(path):
+            with open(path) as f:
+                runs.append((scene, what, json.load(f)))
+    if not runs:
+        return []
+    out = ["", open(os.path.join(REPORT, "speed_against_error.md")).read().rstrip(), ""]
+    out += ["| scene | baseline: path + independent | fastest to the baseline's RMSE | "
+            "its time | speed-up |", "|---|---|---|---|---|"]
+    summaries = {}
+    for scene, what, run in runs:
+        s = run["summary"]
+        summaries[scene] = s
+        seconds, m = best_method(s, lambda m: m.get("time_to_baseline_error"))
+        out.append(f"| [{scene}]({anchor(f'Scene {scene}: {what}')}) ({what}) | "
+                   f"RMSE {s['baseline_rmse']:.4f} at {s['max_spp']} spp in "
+                   f"{s['baseline_seconds']:.2f} s | "
+                   + (f"{m['method']} | {seconds:.2f} s | {m['speed_up']:.1f}x |" if m
+                      else "- | - | - |"))
+    out.append("")
+    if "ch11" in summaries:
+        key = f"{CORNELL_RMSE:g}"
+        seconds, m = best_method(summaries["ch11"],
+                                 lambda m: m["targets"].get(key, {}).get("seconds"))
+        if m:
+            verdict = "met" if seconds <= CORNELL_SECONDS else "not met"
+            out.append(f"Target (a), the Cornell box: RMSE {CORNELL_RMSE} within "
+                       f"{CORNELL_SECONDS} s. The fastest, {m['method']}, takes {seconds:.2f} s: "
+                       f"{verdict}.")
+        else:
+            out.append(f"Target (a), the Cornell box: no method reached RMSE {CORNELL_RMSE}.")
+    if "ch12" in summaries:
+        _seconds, m = best_method(summaries["ch12"], lambda m: m.get("time_to_baseline_error"))
+        if m:
+            verdict = "met" if m["speed_up"] >= SMOKE_SPEED_UP else "not met"
+            out.append(f"Target (b), the smoke: the baseline's 1024-spp RMSE at least "
+                       f"{SMOKE_SPEED_UP} times sooner. The fastest, {m['method']}, is "
+                       f"{m['speed_up']:.1f} times sooner: {verdict}.")
+    for scene, what, run in runs:
+        out += ["", f"### Scene {scene}: {what}", "",
+                f"![RMSE against seconds, {scene}](convergence/{scene}.png)", "",
+                open(os.path.join(folder, f"{scene}.md")).read().rstrip()]
+        if run.get("equal_time") and os.path.exists(os.path.join(folder,
+                                                                 f"{scene}-equal-time.png")):
+            left, right = run["equal_time"]
+            out += ["", f"![{left['method']} beside {right['method']} in equal time]"
+                        f"(convergence/{scene}-equal-time.png)", "",
+                    f"Left: {left['method']}; right: {right['method']}; the same seconds "
+                    "(spp, times and RMSE above)."]
+        out += ["", "Data: [CSV](convergence/{0}.csv), [record](convergence/{0}.json); "
+                    "command: `{1}`.".format(scene, " ".join(run["command"]))]
+    return out
+
+
 def machine():
     cpu = platform.processor() or "unknown CPU"
     try:
@@ -145,6 +218,7 @@ def main():
                    f"{t['spp']} | "
                    f"{t['depth']} | {t['threads']} | {t['seconds']} | {t['rate']} |")
     out += benchmark_section()
+    out += convergence_section()
     out += ["", "## Figures", ""]
     for figure, chapter, extra, caption in figures:
         if chapter == "crops":
