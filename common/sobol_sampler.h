@@ -42,10 +42,12 @@ class sobol_sampler : public sampler {
   private:
     // The key of the current draw: the pixel's key mixed with the draw's place in the layout.
     std::uint64_t draw_key();
+    // owen_scramble(index, key): the draw's own order of the pixel's sample indices.
+    std::uint32_t shuffled_index(std::uint32_t key) const;
 
     std::uint64_t seed_key;
-    std::uint64_t pixel_key = 0;
-    std::uint32_t index     = 0;
+    std::uint64_t pixel_key      = 0;
+    std::uint32_t index_reversed = 0;  // the sample index, bits reversed
 };
 
 }  // namespace rt

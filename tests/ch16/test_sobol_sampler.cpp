@@ -55,6 +55,30 @@ TEST_CASE("sobol: dimension 0 is the van der Corput sequence, dimension 1 Sobol'
     CHECK(rt::sobol_sampler::sobol_dimension_1(3) == half / 2);
 }
 
+TEST_CASE("sobol: dimension 1's byte tables give the definition's point for every index",
+          "[ch16]") {
+    // The definition: direction numbers v_k = v_(k-1) ^ (v_(k-1) >> 1) from 2^31, XORed over the
+    // index's set bits. The sampler looks up four tables instead; the shuffled indices use all
+    // 32 bits, so check every single bit, every byte value and many random full indices.
+    auto by_definition = [](std::uint32_t i) {
+        std::uint32_t result = 0, v = 1u << 31u;
+        for (; i != 0; i >>= 1u, v ^= v >> 1u)
+            if (i & 1u) result ^= v;
+        return result;
+    };
+    for (unsigned bit = 0; bit < 32; ++bit)
+        CHECK(rt::sobol_sampler::sobol_dimension_1(1u << bit) == by_definition(1u << bit));
+    for (std::uint32_t byte = 0; byte < 256; ++byte)
+        for (unsigned shift : {0u, 8u, 16u, 24u})
+            REQUIRE(rt::sobol_sampler::sobol_dimension_1(byte << shift) ==
+                    by_definition(byte << shift));
+    rt::pcg32 rng;
+    for (int k = 0; k < 100000; ++k) {
+        std::uint32_t i = rng.next_u32();
+        REQUIRE(rt::sobol_sampler::sobol_dimension_1(i) == by_definition(i));
+    }
+}
+
 TEST_CASE("sobol: the unscrambled first 2^m points are a (0, m, 2)-net", "[ch16]") {
     for (int m = 1; m <= 10; ++m) {
         std::vector<rt::sample2> points;
