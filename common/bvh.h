@@ -99,6 +99,8 @@ class bvh : public bounded_hittable {
                             const std::vector<build_item>& items);
     bool hit_leaf(const leaf& l, const ray& r, interval& ray_t, hit_record& rec) const;
     bool closest_hit(const ray& r, interval ray_t, hit_record& rec) const;
+    // [ch14] transmittance(), compiled twice as closest_hit() is (a virtual function cannot be).
+    real shadow_fraction(const ray& r, interval ray_t) const;
 
     aabb box;
     std::size_t boxes_in_tree = 0;
