@@ -19,6 +19,16 @@ real largest_magnitude(const vec3& v) {
     return x > yz ? x : yz;
 }
 
+// How far p = center + radius * n can be from the true sphere, in units of radius + |p|: n's
+// length is 1 to within about 3 eps (a sum of squares, a square root and a division), radius * n
+// rounds by eps / 2 of the radius, and the sum with the center by eps / 2 of each coordinate of
+// p. The next ray's test of this sphere adds about eps * radius (the cancellation in
+// |origin - center|^2 - radius^2). Twice those, so that an origin moved off by this bound is off
+// for sure (test_spawn_ray). Why |p| and not |center|: a big sphere's center lies far from the
+// point, and the ground of radius 1000 at (0, -1000, 0) would then move float rays 0.015 up,
+// inside the small spheres resting on it, which darkened their contact shadows.
+constexpr real sphere_error_scale = 8 * std::numeric_limits<real>::epsilon();
+
 }  // namespace
 
 // Out of line on purpose (noinline): the common miss, inlined wherever spheres are tested, then
@@ -50,7 +60,7 @@ real largest_magnitude(const vec3& v) {
     // NaN reaches a pixel.
     vec3 outward_normal = distance > 0 ? from_center / distance : -unit_vector(r.direction());
     rec.p               = center + radius * outward_normal;
-    rec.p_error         = spawn_offset_scale * (largest_magnitude(center) + radius);
+    rec.p_error         = sphere_error_scale * (radius + largest_magnitude(rec.p));
     rec.set_face_normal(r, outward_normal);
     rec.local = outward_normal;  // [ch08] what the texture coordinates come from
     return true;

@@ -9,6 +9,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -125,10 +126,16 @@ class absorber : public rt::material {
 TEST_CASE("path_tracer: no shadow acne, every path off a Lambertian sphere returns its albedo",
           "[ch03]") {
     // A unit sphere 4 ahead, and a 1e-3 sphere about 1e3 from the origin seen from 0.004 away.
+    // Float keeps 24 bits: such a sphere spans 16 of its ulps, so whether a ray grazing its rim
+    // enters or leaves is decided by rounding alone. Its far sphere is a 1e-2 one 1e2 away
+    // instead: a million to one in double, ten thousand to one in float.
+    const bool is_double = std::numeric_limits<real>::digits >= 53;
+    const real far_scale = is_double ? real(1) : real(0.1),
+               small     = is_double ? real(1e-3) : real(1e-2);
+    const point3 far_center(500 * far_scale, -300 * far_scale, 800 * far_scale);
     const furnace scenes[] = {
         furnace(gray_sphere(point3(0, 0, 0), 1), point3(0, 0, 4), 40),
-        furnace(gray_sphere(point3(500, -300, 800), rt::real(1e-3)), point3(500, -300, 800.004),
-                40),
+        furnace(gray_sphere(far_center, small), far_center + vec3(0, 0, 4 * small), 40),
     };
     for (const auto& sc : scenes) {
         auto c = trace_every_pixel(sc, 2, albedo, color(1, 1, 1));
