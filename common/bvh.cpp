@@ -437,10 +437,6 @@ bool bvh::hit(const ray& r, interval ray_t, hit_record& rec) const {
 }
 
 // [ch14 begin]
-real bvh::transmittance(const ray& r, interval ray_t) const {
-    return shadow_fraction(r, ray_t);
-}
-
 RT_ALSO_FOR_AVX2 real bvh::shadow_fraction(const ray& r, interval ray_t) const {
     if (leaves.empty()) return 1;
     // Every child the box test lets through, in the binary tree's first-child-first order (octant
@@ -471,6 +467,11 @@ RT_ALSO_FOR_AVX2 real bvh::shadow_fraction(const ray& r, interval ray_t) const {
         current = stack[--top];
     }
     return fraction;
+}
+
+// After shadow_fraction: Clang wants a multiversioned function declared so before its first use.
+real bvh::transmittance(const ray& r, interval ray_t) const {
+    return shadow_fraction(r, ray_t);
 }
 // [ch14 end]
 
