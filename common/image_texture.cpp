@@ -37,9 +37,24 @@ const std::array<real, 256>& srgb8_to_linear() {
 
 // stb's reason for its last failure, in brackets, or nothing: it gives none for some broken
 // files (a PNG cut just before its end chunk).
+// stb's reason, in parentheses. Some reasons quote the file's own bytes (an unknown PNG chunk
+// "XXXX PNG chunk not known" names its four type bytes), which a hostile file can make a newline
+// or an escape sequence: every byte outside printable ASCII is shown as \xNN, so the error stays
+// one line of plain text.
 std::string stb_reason() {
     const char* reason = stbi_failure_reason();
-    return reason && *reason ? std::string(" (") + reason + ")" : "";
+    if (!reason || !*reason) return "";
+    std::string text = " (";
+    for (const char* c = reason; *c; ++c) {
+        const auto byte = static_cast<unsigned char>(*c);
+        if (byte >= 0x20 && byte < 0x7f) {
+            text += *c;
+        } else {
+            static const char hex[] = "0123456789abcdef";
+            text += {'\\', 'x', hex[byte >> 4u], hex[byte & 15u]};
+        }
+    }
+    return text + ")";
 }
 
 struct declared_size {

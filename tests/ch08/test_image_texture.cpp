@@ -285,6 +285,22 @@ TEST_CASE("image_texture: a folder or a device is refused, naming it", "[ch08]")
                Catch::Contains("'/dev/null'") && Catch::Contains("not a regular file"));
 }
 
+TEST_CASE("image_texture: a refusal quoting the file's own bytes stays one line of text",
+          "[ch08]") {
+    // stb names an unknown critical PNG chunk by its four type bytes: here "P5", a newline and
+    // an escape, as in fuzz/regressions/texture/png_chunk_type_with_newline.png (the fuzzer's
+    // find). The error must still be one line, with those bytes shown as \xNN.
+    temp_folder dir("image_texture", "chunk_name");
+    const std::string file = png_claiming(2, 2);
+    const std::string odd =
+        file.substr(0, 33) + png_chunk(std::string("P5\n\x1b", 4), "12") + file.substr(33);
+    write_bytes(dir.file("odd.png"), odd);
+    const std::string message = refusal(dir.file("odd.png"));
+    CHECK_THAT(message, Catch::Contains(quoted(dir.file("odd.png"))) &&
+                            Catch::Contains("P5\\x0a\\x1b PNG chunk not known"));
+    CHECK(message.find_first_of("\n\r\x1b") == std::string::npos);
+}
+
 TEST_CASE("image_texture: the CRC of the hand-made PNG chunks is the standard one", "[ch08]") {
     // The check value of CRC-32 (ISO 3309), and the IEND chunk every PNG ends with.
     CHECK(crc32("123456789") == 0xCBF43926u);
