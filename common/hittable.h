@@ -14,9 +14,10 @@ namespace rt {
 class material;  // [ch03]
 class hittable;
 
-// Relative size of the offset that moves a new ray's origin off the surface it leaves.
-// Many ulps, so it dominates the rounding in p and in the intersection test; still only ~1e-14
-// (double) or ~1e-5 (float) of the scene's scale, far below a pixel.
+// Relative size of the offset that moves a new ray's origin off the surface it leaves (quads and
+// instances; a sphere bounds its own points more tightly, sphere.cpp). Many ulps, so it
+// dominates the rounding in p and in the intersection test; still only ~1e-14 (double) or
+// ~1e-5 (float) of the scene's scale, far below a pixel.
 inline constexpr real spawn_offset_scale = 64 * std::numeric_limits<real>::epsilon();
 
 // [ch08 begin]
