@@ -1,7 +1,7 @@
-// Small helpers that several test files share: random draws, exact comparisons, the float-build
-// guard of the hard cases, and temporary files. Every random helper makes each draw in a statement
-// of its own (the order in which function arguments are evaluated is unspecified), so that every
-// compiler draws the same numbers in the same order; a test's seed then fixes all of its cases.
+// Small helpers that several test files share: random draws, exact comparisons and temporary
+// files. Every random helper makes each draw in a statement of its own (the order in which
+// function arguments are evaluated is unspecified), so that every compiler draws the same numbers
+// in the same order; a test's seed then fixes all of its cases.
 // Chapter 01, like every file directly in tests/: it includes chapter-01 headers only, so that
 // every chapter's tests can use it. Helpers that need materials are in ch03/material_helpers.h.
 #pragma once
@@ -87,16 +87,6 @@ inline rt::real next_after_draws(std::uint64_t seed, int px, int py, int k, int 
     s.start_pixel_sample(px, py, k);
     for (int i = 0; i < draws; ++i) s.next_1d();
     return s.next_1d();
-}
-
-// True (with a warning that says so) in a float build, whose 24 bits the hard cases outrun.
-inline bool needs_double() {
-    if constexpr (std::numeric_limits<rt::real>::digits >= 53) {
-        return false;
-    } else {
-        WARN("skipped: this hard case needs real = double");
-        return true;
-    }
 }
 
 // Whether two images have the same size and the same float bits, -0 and NaN payloads included.

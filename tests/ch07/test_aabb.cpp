@@ -427,8 +427,11 @@ TEST_CASE("aabb: a flat box far from the origin, where an ulp is 2.4e-4, is hit 
     // On a crossing ray both y distances are equal, and the far-distance factor keeps the
     // interval non-empty. Random, inexact rays: above and below the plane, on either side of
     // the origin.
-    if (rt_test::needs_double()) return;
-    for (const real y : {std::ldexp(real(1), 40), -std::ldexp(real(1), 40)}) {
+    // Float's ulp is 2^-12 already at |y| = 2^11 (24 bits against double's 53): the same ulp
+    // against the same box and rays, so the same case, at the height where float has it. At
+    // 2^40 float's ulp is 2^17: rays 1 to 100 away would start in the plane itself.
+    const int height = std::numeric_limits<real>::digits - 13;  // 40 (double), 11 (float)
+    for (const real y : {std::ldexp(real(1), height), -std::ldexp(real(1), height)}) {
         CAPTURE(y);
         const aabb flat(point3(-1, y, -1), point3(1, y, 1));
         CHECK(flat.y.min == y);
