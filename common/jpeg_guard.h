@@ -3,6 +3,9 @@
 //   - a Huffman table (DHT segment) whose 16 code counts add up to more than 256: stb 2.27
 //     writes that many code lengths and symbols into arrays of 257 and 256 bytes (a heap
 //     buffer overflow; stb 2.28 added the check). A valid table has at most 256 codes.
+//   - a scan that decodes with a Huffman table no DHT segment before it defined: stb decodes
+//     with the uninitialized table (its assertion fails, or garbage). A valid file defines every
+//     table before the first scan that uses it.
 #pragma once
 
 #include <cstdio>

@@ -472,6 +472,36 @@ TEST_CASE(
 }
 
 TEST_CASE(
+    "image_texture: a JPEG scan that decodes with a Huffman table defined nowhere before it is "
+    "refused (stb 2.27 would decode with an uninitialized table)",
+    "[ch08]") {
+    // A valid baseline JPEG from stb's writer (tables 0 and 1 of each class, then the scan),
+    // then the same file with its scan's first component pointed at tables 2, which no DHT
+    // segment defines (as the fuzzer's jpeg_scan_uses_undefined_table.jpg does).
+    temp_folder dir("image_texture", "undefined_table");
+    std::vector<std::uint8_t> flat;
+    for (int i = 0; i < 8 * 8; ++i) flat.insert(flat.end(), {200, 100, 50});
+    REQUIRE(stbi_write_jpg(dir.file("good.jpg").c_str(), 8, 8, 3, flat.data(), 90) != 0);
+    CHECK_NOTHROW(rt::image_texture(dir.file("good.jpg")));
+    std::string bytes      = read_bytes(dir.file("good.jpg"));
+    const std::size_t scan = bytes.find("\xFF\xDA");
+    REQUIRE(scan != std::string::npos);
+    // FF DA, length (2 bytes), component count, then (id, DC << 4 | AC) per component.
+    bytes[scan + 6] = '\x22';
+    write_bytes(dir.file("undefined.jpg"), bytes);
+    CHECK_THAT(refusal(dir.file("undefined.jpg")),
+               Catch::Contains(quoted(dir.file("undefined.jpg"))) &&
+                   Catch::EndsWith("(a JPEG scan decodes with DC Huffman table 2, which no "
+                                   "table before it defines)"));
+    // Only its AC table undefined: named too.
+    bytes[scan + 6] = '\x03';
+    write_bytes(dir.file("undefined_ac.jpg"), bytes);
+    CHECK_THAT(refusal(dir.file("undefined_ac.jpg")),
+               Catch::EndsWith("(a JPEG scan decodes with AC Huffman table 3, which no table "
+                               "before it defines)"));
+}
+
+TEST_CASE(
     "image_texture: a PPM/PGM whose header numbers overflow an int, or whose texels are cut "
     "short, is refused before stb reads it",
     "[ch08]") {
