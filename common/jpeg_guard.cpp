@@ -69,7 +69,7 @@ std::string scan_problem(std::FILE* file, int length, bool progressive,
     if (length < 2 || size > header.size() || std::fread(header.data(), 1, size, file) != size)
         return "";  // stb refuses a scan header of another length ("bad SOS len")
     const int components = header[0];
-    if (components < 1 || components > 4 || size != std::size_t(4 + 2 * components)) return "";
+    if (components < 1 || components > 4 || size != 4 + 2 * std::size_t(components)) return "";
     const int start = header[1 + 2 * components], high_bit = header[3 + 2 * components] >> 4;
     const bool needs_dc = !progressive || (start == 0 && high_bit == 0);
     const bool needs_ac = !progressive || start > 0;
