@@ -26,13 +26,12 @@ constant_medium::constant_medium(const bounded_object& b, real density,
 }
 
 bool constant_medium::inside_stretch(const ray& r, interval ray_t, real& t_in, real& t_out) const {
-    hit_record entry, exit;
-    if (!boundary->hit(r, interval::universe(), entry)) return false;
-    if (!boundary->hit(r, interval(entry.t, infinity), exit)) return false;
+    interval inside;
+    if (!boundary->crossing(r, inside)) return false;
 
     // Nothing behind the ray's origin counts, whatever interval the caller passes.
-    t_in  = std::fmax(entry.t, std::fmax(ray_t.min, real(0)));
-    t_out = std::fmin(exit.t, ray_t.max);
+    t_in  = std::fmax(inside.min, std::fmax(ray_t.min, real(0)));
+    t_out = std::fmin(inside.max, ray_t.max);
     return t_in < t_out;
 }
 

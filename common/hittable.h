@@ -93,6 +93,21 @@ class hittable {
     virtual surface_uv uv_at(const vec3& /*local*/) const { return {}; }
     // [ch08 end]
 
+    // [ch12 begin]
+    // The stretch of r inside this object, for a medium's boundary (constant_medium): from the
+    // nearest hit at any t, even behind the ray's origin, to the next hit after it. The same two
+    // numbers as hit() over interval::universe() and then over (entry, infinity), which is what
+    // this default asks; a shape that solves for both at once (a sphere) answers for half of
+    // the work. False, and `inside` unchanged, when there are not two such hits.
+    virtual bool crossing(const ray& r, interval& inside) const {
+        hit_record entry, exit;
+        if (!hit(r, interval::universe(), entry)) return false;
+        if (!hit(r, interval(entry.t, infinity), exit)) return false;
+        inside = interval(entry.t, exit.t);
+        return true;
+    }
+    // [ch12 end]
+
     // [ch14 begin]
     // The fraction of light that travels along r through ray_t unscattered: 0 when a surface is
     // in the way, exp(-density * length) through a medium (constant_medium), the product over

@@ -18,6 +18,11 @@ class translate : public bounded_hittable {
 
     bool hit(const ray& r, interval ray_t, hit_record& rec) const override;
     aabb bounding_box() const override { return box; }
+    // [ch12 begin]
+    bool crossing(const ray& r, interval& inside) const override {
+        return object->crossing(r.continued(r.origin() - offset, r.direction()), inside);
+    }
+    // [ch12 end]
     // [ch14 begin]
     real transmittance(const ray& r, interval ray_t) const override {
         return object->transmittance(r.continued(r.origin() - offset, r.direction()), ray_t);
@@ -43,6 +48,12 @@ class rotate : public bounded_hittable {
 
     bool hit(const ray& r, interval ray_t, hit_record& rec) const override;
     aabb bounding_box() const override { return box; }
+    // [ch12 begin]
+    bool crossing(const ray& r, interval& inside) const override {
+        return object->crossing(r.continued(to_object(r.origin()), to_object(r.direction())),
+                                inside);
+    }
+    // [ch12 end]
     // [ch14 begin]
     real transmittance(const ray& r, interval ray_t) const override {
         return object->transmittance(r.continued(to_object(r.origin()), to_object(r.direction())),

@@ -29,6 +29,25 @@ real largest_magnitude(const vec3& v) {
 // inside the small spheres resting on it, which darkened their contact shadows.
 constexpr real sphere_error_scale = 8 * std::numeric_limits<real>::epsilon();
 
+// Both roots, t_near <= t_far, of sphere_quadratic()'s equation for a ray that may cross.
+// Stable: q never cancels, since b and sign(b) sqrt(...) add with the same sign.
+// sqrt(b^2 - a c) = sqrt(a * discriminant) = sqrt(a2_discriminant / a).
+inline void sphere_roots(real a, real b, real c, real a2_discriminant, real& t_near, real& t_far) {
+    real q = -(b + std::copysign(std::sqrt(a2_discriminant / a), b));
+    t_far  = q / a;
+    // q = 0 only for a ray that starts on the sphere and grazes it: both roots are then 0.
+    t_near = q != 0 ? c / q : t_far;
+    if (t_near > t_far) std::swap(t_near, t_far);
+}
+
+// The root a hit inside ray_t takes: the nearer one if ray_t holds it, else the farther.
+inline bool first_root_inside(real t_near, real t_far, interval ray_t, real& root) {
+    root = t_near;
+    if (ray_t.surrounds(root)) return true;
+    root = t_far;
+    return ray_t.surrounds(root);
+}
+
 }  // namespace
 
 // Out of line on purpose (noinline): the common miss, inlined wherever spheres are tested, then
@@ -36,19 +55,9 @@ constexpr real sphere_error_scale = 8 * std::numeric_limits<real>::epsilon();
 [[gnu::noinline]] bool record_sphere_hit(const point3& center, real radius, const ray& r,
                                          interval ray_t, hit_record& rec, real a, real b, real c,
                                          real a2_discriminant) {
-    // Stable roots: q never cancels, since b and sign(b) sqrt(...) add with the same sign.
-    // sqrt(b^2 - a c) = sqrt(a * discriminant) = sqrt(a2_discriminant / a).
-    real q     = -(b + std::copysign(std::sqrt(a2_discriminant / a), b));
-    real t_far = q / a;
-    // q = 0 only for a ray that starts on the sphere and grazes it: both roots are then 0.
-    real t_near = q != 0 ? c / q : t_far;
-    if (t_near > t_far) std::swap(t_near, t_far);
-
-    real root = t_near;
-    if (!ray_t.surrounds(root)) {
-        root = t_far;
-        if (!ray_t.surrounds(root)) return false;
-    }
+    real t_near = 0, t_far = 0, root = 0;
+    sphere_roots(a, b, c, a2_discriminant, t_near, t_far);
+    if (!first_root_inside(t_near, t_far, ray_t, root)) return false;
 
     rec.t = root;
     // Project the point back onto the sphere: p then lies within a few ulps of the surface
@@ -84,6 +93,21 @@ bool sphere::hit(const ray& r, interval ray_t, hit_record& rec) const {
     rec.object = this;       // [ch08]
     return true;
 }
+
+// [ch12 begin]
+// What hit() would find over interval::universe() and then after that hit, from one quadratic
+// instead of two, and no hit records: the same two numbers, bit for bit.
+bool sphere::crossing(const ray& r, interval& inside) const {
+    real a = 0, b = 0, c = 0, a2_discriminant = 0;
+    if (!sphere_quadratic(center_, radius_, r, a, b, c, a2_discriminant)) return false;
+    real t_near = 0, t_far = 0, entry = 0, exit = 0;
+    sphere_roots(a, b, c, a2_discriminant, t_near, t_far);
+    if (!first_root_inside(t_near, t_far, interval::universe(), entry)) return false;
+    if (!first_root_inside(t_near, t_far, interval(entry, infinity), exit)) return false;
+    inside = interval(entry, exit);
+    return true;
+}
+// [ch12 end]
 
 // [ch08 begin]
 surface_uv sphere::uv_from_normal(const vec3& n) {

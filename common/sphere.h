@@ -12,23 +12,22 @@
 namespace rt {
 
 // The rarer half of hit_sphere(): the roots and the record of a ray known to cross the sphere
-// (sphere.cpp). a, b, c and a2_discriminant are hit_sphere()'s.
+// (sphere.cpp). a, b, c and a2_discriminant are sphere_quadratic()'s.
 bool record_sphere_hit(const point3& center, real radius, const ray& r, interval ray_t,
                        hit_record& rec, real a, real b, real c, real a2_discriminant);
 
-// The nearest hit of r with the sphere (center, radius) inside ray_t: fills rec's t, p, p_error,
-// normal and front_face (the caller adds the material) and returns true, or returns false and
-// leaves rec unchanged. Shared by every sphere, moving or not.
+// The quadratic of r and the sphere (center, radius): with f = A - C, a t^2 + 2 b t + c = 0,
+// a = d.d, b = f.d, c = f.f - r^2, and a2_discriminant = a^2 (b^2 - a c). False when r surely
+// misses the sphere; true when it may cross it (a2_discriminant is then not negative).
 // Inline, and only the common miss: a BVH leaf (chapter 07) tests its spheres in a loop, and the
 // compiler can then compute the ray's own terms (d.d) once for all of them.
-inline bool hit_sphere(const point3& center, real radius, const ray& r, interval ray_t,
-                       hit_record& rec) {
-    // With f = A - C: a t^2 + 2 b t + c = 0, a = b.b, b = f.b, c = f.f - r^2.
+inline bool sphere_quadratic(const point3& center, real radius, const ray& r, real& a, real& b,
+                             real& c, real& a2_discriminant) {
     const vec3& d = r.direction();
     vec3 f        = r.origin() - center;
-    real a        = dot(d, d);
-    real b        = dot(f, d);
-    real c        = dot(f, f) - radius * radius;
+    a             = dot(d, d);
+    b             = dot(f, d);
+    c             = dot(f, f) - radius * radius;
 
     // Most spheres of a big list are clearly missed. The textbook discriminant b^2 - a c says so
     // cheaply, but it cancels badly (distant or grazing spheres); trust its "miss" only when it
@@ -39,9 +38,18 @@ inline bool hit_sphere(const point3& center, real radius, const ray& r, interval
     // b^2 - a c = a (r^2 - |f_perp|^2), where f_perp = f - (b/a) d is f minus its part along the
     // ray: this form avoids subtracting two huge, nearly equal numbers. Scaled by a^2
     // (g = a f_perp) so that it needs no division.
-    vec3 g               = a * f - b * d;
-    real a2_discriminant = radius * radius * a * a - dot(g, g);
-    if (a2_discriminant < 0) return false;
+    vec3 g          = a * f - b * d;
+    a2_discriminant = radius * radius * a * a - dot(g, g);
+    return !(a2_discriminant < 0);
+}
+
+// The nearest hit of r with the sphere (center, radius) inside ray_t: fills rec's t, p, p_error,
+// normal and front_face (the caller adds the material) and returns true, or returns false and
+// leaves rec unchanged. Shared by every sphere, moving or not.
+inline bool hit_sphere(const point3& center, real radius, const ray& r, interval ray_t,
+                       hit_record& rec) {
+    real a = 0, b = 0, c = 0, a2_discriminant = 0;
+    if (!sphere_quadratic(center, radius, r, a, b, c, a2_discriminant)) return false;
     return record_sphere_hit(center, radius, r, ray_t, rec, a, b, c, a2_discriminant);
 }
 
@@ -57,6 +65,7 @@ class sphere : public hittable {
     // [ch03 end]
 
     bool hit(const ray& r, interval ray_t, hit_record& rec) const override;
+    bool crossing(const ray& r, interval& inside) const override;  // [ch12] one quadratic
 
     const point3& center() const { return center_; }
     real radius() const { return radius_; }
