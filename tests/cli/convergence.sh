@@ -6,15 +6,15 @@
 # CSV has its columns, one curve per method with spp doubling from 1; its RMSE of mis + sobol at
 # 8 spp equals one computed here, independently, from the same render; the plot is a PNG; the
 # table has one row per method; a missing reference and a bad method are refused (exit code 2,
-# one line, nothing written). Exit code 77 (skipped) without matplotlib: only tools/install-deps
-# --report installs it.
+# one line, nothing written). Without matplotlib or numpy it fails at once, saying so: the test
+# command installs them (tools/install-deps), so a skip would only hide a broken install.
 set -euo pipefail
 exe=$1
 here=$(cd "$(dirname "$0")" && pwd)
 convergence=$here/../../tools/convergence
 if ! /usr/bin/python3 -c 'import matplotlib, numpy' 2>/dev/null; then
-    echo "SKIP: needs python3-matplotlib (tools/install-deps --report)"
-    exit 77
+    echo "FAIL: needs python3-matplotlib and python3-numpy (tools/install-deps installs them)"
+    exit 1
 fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
