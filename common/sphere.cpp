@@ -29,7 +29,7 @@ real largest_magnitude(const vec3& v) {
 // inside the small spheres resting on it, which darkened their contact shadows.
 constexpr real sphere_error_scale = 8 * std::numeric_limits<real>::epsilon();
 
-// Both roots, t_near <= t_far, of sphere_quadratic()'s equation for a ray that may cross.
+// Both roots, t_near <= t_far, of solve_sphere_quadratic()'s equation for a ray that may cross.
 // Stable: q never cancels, since b and sign(b) sqrt(...) add with the same sign.
 // sqrt(b^2 - a c) = sqrt(a * discriminant) = sqrt(a2_discriminant / a).
 inline void sphere_roots(real a, real b, real c, real a2_discriminant, real& t_near, real& t_far) {
@@ -98,14 +98,14 @@ bool sphere::hit(const ray& r, interval ray_t, hit_record& rec) const {
 // What hit() would find over interval::universe() and then after that hit, from one quadratic
 // instead of two, and no hit records: the same two numbers, bit for bit.
 bool sphere::crossing(const ray& r, interval& inside) const {
-    real a = 0, b = 0, c = 0, a2_discriminant = 0;
-    if (!sphere_quadratic(center_, radius_, r, a, b, c, a2_discriminant)) return false;
-    real t_near = 0, t_far = 0, entry = 0, exit = 0;
-    sphere_roots(a, b, c, a2_discriminant, t_near, t_far);
-    if (!first_root_inside(t_near, t_far, interval::universe(), entry)) return false;
-    if (!first_root_inside(t_near, t_far, interval(entry, infinity), exit)) return false;
-    inside = interval(entry, exit);
-    return true;
+    return solve_sphere_quadratic(center_, radius_, r, [&](real a, real b, real c, real a2_disc) {
+        real t_near = 0, t_far = 0, entry = 0, exit = 0;
+        sphere_roots(a, b, c, a2_disc, t_near, t_far);
+        if (!first_root_inside(t_near, t_far, interval::universe(), entry)) return false;
+        if (!first_root_inside(t_near, t_far, interval(entry, infinity), exit)) return false;
+        inside = interval(entry, exit);
+        return true;
+    });
 }
 // [ch12 end]
 

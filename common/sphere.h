@@ -12,22 +12,25 @@
 namespace rt {
 
 // The rarer half of hit_sphere(): the roots and the record of a ray known to cross the sphere
-// (sphere.cpp). a, b, c and a2_discriminant are sphere_quadratic()'s.
+// (sphere.cpp). a, b, c and a2_discriminant are solve_sphere_quadratic()'s.
 bool record_sphere_hit(const point3& center, real radius, const ray& r, interval ray_t,
                        hit_record& rec, real a, real b, real c, real a2_discriminant);
 
 // The quadratic of r and the sphere (center, radius): with f = A - C, a t^2 + 2 b t + c = 0,
-// a = d.d, b = f.d, c = f.f - r^2, and a2_discriminant = a^2 (b^2 - a c). False when r surely
-// misses the sphere; true when it may cross it (a2_discriminant is then not negative).
-// Inline, and only the common miss: a BVH leaf (chapter 07) tests its spheres in a loop, and the
-// compiler can then compute the ray's own terms (d.d) once for all of them.
-inline bool sphere_quadratic(const point3& center, real radius, const ray& r, real& a, real& b,
-                             real& c, real& a2_discriminant) {
+// a = d.d, b = f.d, c = f.f - r^2, and a2_discriminant = a^2 (b^2 - a c). Returns false when r
+// surely misses the sphere, else what crossing(a, b, c, a2_discriminant) returns (then
+// a2_discriminant is not negative). Inline, and only the common miss: a BVH leaf (chapter 07)
+// tests its spheres in a loop, and the compiler can then compute the ray's own terms (d.d) once
+// for all of them. (A callback rather than output parameters: the terms then stay in registers,
+// and the BVH's loop compiles as it did before chapter 12 shared this.)
+template <class Crossing>
+inline bool solve_sphere_quadratic(const point3& center, real radius, const ray& r,
+                                   Crossing&& crossing) {
     const vec3& d = r.direction();
     vec3 f        = r.origin() - center;
-    a             = dot(d, d);
-    b             = dot(f, d);
-    c             = dot(f, f) - radius * radius;
+    real a        = dot(d, d);
+    real b        = dot(f, d);
+    real c        = dot(f, f) - radius * radius;
 
     // Most spheres of a big list are clearly missed. The textbook discriminant b^2 - a c says so
     // cheaply, but it cancels badly (distant or grazing spheres); trust its "miss" only when it
@@ -38,9 +41,10 @@ inline bool sphere_quadratic(const point3& center, real radius, const ray& r, re
     // b^2 - a c = a (r^2 - |f_perp|^2), where f_perp = f - (b/a) d is f minus its part along the
     // ray: this form avoids subtracting two huge, nearly equal numbers. Scaled by a^2
     // (g = a f_perp) so that it needs no division.
-    vec3 g          = a * f - b * d;
-    a2_discriminant = radius * radius * a * a - dot(g, g);
-    return !(a2_discriminant < 0);
+    vec3 g               = a * f - b * d;
+    real a2_discriminant = radius * radius * a * a - dot(g, g);
+    if (a2_discriminant < 0) return false;
+    return crossing(a, b, c, a2_discriminant);
 }
 
 // The nearest hit of r with the sphere (center, radius) inside ray_t: fills rec's t, p, p_error,
@@ -48,9 +52,9 @@ inline bool sphere_quadratic(const point3& center, real radius, const ray& r, re
 // leaves rec unchanged. Shared by every sphere, moving or not.
 inline bool hit_sphere(const point3& center, real radius, const ray& r, interval ray_t,
                        hit_record& rec) {
-    real a = 0, b = 0, c = 0, a2_discriminant = 0;
-    if (!sphere_quadratic(center, radius, r, a, b, c, a2_discriminant)) return false;
-    return record_sphere_hit(center, radius, r, ray_t, rec, a, b, c, a2_discriminant);
+    return solve_sphere_quadratic(center, radius, r, [&](real a, real b, real c, real a2_disc) {
+        return record_sphere_hit(center, radius, r, ray_t, rec, a, b, c, a2_disc);
+    });
 }
 
 class sphere : public hittable {
