@@ -51,4 +51,19 @@ for p in problems:
     print("FAIL:", p)
 sys.exit(1 if problems else 0)
 EOF_CHECK
-echo "tools/benchmark --quick: 6 scenes, JSON, make_report lines and performance.md consistent"
+# --rewrite measures nothing and writes the same performance.md from the data files; without
+# them it refuses in one line.
+cp "$tmp/performance.md" "$tmp/measured.md"
+rm "$tmp/performance.md"
+"$src/tools/benchmark" --rewrite --build "$build" --out-dir "$tmp" 2>"$tmp/log" ||
+    { cat "$tmp/log"; echo "FAIL: tools/benchmark --rewrite failed"; exit 1; }
+cmp -s "$tmp/performance.md" "$tmp/measured.md" ||
+    { diff "$tmp/measured.md" "$tmp/performance.md" | head; echo "FAIL: --rewrite differs"; exit 1; }
+mkdir "$tmp/empty"
+if "$src/tools/benchmark" --rewrite --build "$build" --out-dir "$tmp/empty" 2>"$tmp/log"; then
+    echo "FAIL: --rewrite without data succeeded"; exit 1
+fi
+[ "$(wc -l <"$tmp/log")" -eq 1 ] && grep -q "benchmarks.json" "$tmp/log" ||
+    { cat "$tmp/log"; echo "FAIL: --rewrite without data: not one line naming benchmarks.json"; exit 1; }
+[ ! -e "$tmp/empty/performance.md" ] || { echo "FAIL: --rewrite without data wrote a file"; exit 1; }
+echo "tools/benchmark --quick: 6 scenes, JSON, make_report lines and performance.md consistent; --rewrite reproduces it"
