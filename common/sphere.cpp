@@ -10,15 +10,6 @@ namespace rt {
 
 namespace {
 
-// max_abs_component(v) (vec3.h) by comparisons instead of std::fmax, which the compiler cannot
-// inline (fmax must ignore NaN; here v is finite: a sphere whose center is not never gets a hit
-// this far), so a hit saves two library calls. Same value for every finite v.
-real largest_magnitude(const vec3& v) {
-    const real x = std::fabs(v.x()), y = std::fabs(v.y()), z = std::fabs(v.z());
-    const real yz = y > z ? y : z;
-    return x > yz ? x : yz;
-}
-
 // How far p = center + radius * n can be from the true sphere, in units of radius + |p|: n's
 // length is 1 to within about 3 eps (a sum of squares, a square root and a division), radius * n
 // rounds by eps / 2 of the radius, and the sum with the center by eps / 2 of each coordinate of
@@ -69,7 +60,7 @@ inline bool first_root_inside(real t_near, real t_far, interval ray_t, real& roo
     // NaN reaches a pixel.
     vec3 outward_normal = distance > 0 ? from_center / distance : -unit_vector(r.direction());
     rec.p               = center + radius * outward_normal;
-    rec.p_error         = sphere_error_scale * (radius + largest_magnitude(rec.p));
+    rec.p_error         = sphere_error_scale * (radius + max_abs_component(rec.p));
     rec.set_face_normal(r, outward_normal);
     rec.local = outward_normal;  // [ch08] what the texture coordinates come from
     return true;

@@ -92,8 +92,13 @@ inline vec3 unit_vector(const vec3& v) {
 }
 
 // The largest absolute component: the scale that floating-point error in a point grows with.
+// The value of std::fmax(|x|, std::fmax(|y|, |z|)) for every v, NaN and infinity included, but
+// by comparisons: fmax is a library call the compiler cannot inline (it must ignore a NaN), and
+// quads and instances ask this at every hit.
 inline real max_abs_component(const vec3& v) {
-    return std::fmax(std::fabs(v.e[0]), std::fmax(std::fabs(v.e[1]), std::fabs(v.e[2])));
+    // fmax of two numbers that are not negative: the larger one, or the one that is not NaN.
+    auto larger = [](real a, real b) { return a > b || std::isnan(b) ? a : b; };
+    return larger(std::fabs(v.e[0]), larger(std::fabs(v.e[1]), std::fabs(v.e[2])));
 }
 
 }  // namespace rt

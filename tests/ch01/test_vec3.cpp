@@ -128,3 +128,37 @@ TEST_CASE("vec3: near_zero and max_abs_component", "[vec3][ch01]") {
     CHECK(rt::max_abs_component(vec3(0, 0, -4)) == 4);
     CHECK(rt::max_abs_component(vec3()) == 0);
 }
+
+TEST_CASE("vec3: max_abs_component is fmax's value for every input, NaN and infinity included",
+          "[vec3][hardcase][ch01]") {
+    // The definition it replaces, bit for bit: fmax ignores a NaN argument.
+    auto by_fmax = [](const vec3& v) {
+        return std::fmax(std::fabs(v.x()), std::fmax(std::fabs(v.y()), std::fabs(v.z())));
+    };
+    auto same = [](real a, real b) {
+        return (std::isnan(a) && std::isnan(b)) || (a == b && std::signbit(a) == std::signbit(b));
+    };
+    const real nan      = std::numeric_limits<real>::quiet_NaN();
+    const real inf      = std::numeric_limits<real>::infinity();
+    const real tiny     = std::numeric_limits<real>::denorm_min();
+    const real values[] = {0,    real(-0.0), 1,   -1,   real(2.5), real(-1e30),
+                           tiny, -tiny,      inf, -inf, nan};
+    int cases           = 0;
+    for (real x : values) {
+        for (real y : values) {
+            for (real z : values) {
+                const vec3 v(x, y, z);
+                INFO("v = (" << x << ", " << y << ", " << z << ")");
+                CHECK(same(rt::max_abs_component(v), by_fmax(v)));
+                ++cases;
+            }
+        }
+    }
+    CHECK(cases == 11 * 11 * 11);
+    rt::pcg32 rng(1101, 3);
+    for (int i = 0; i < 10000; ++i) {
+        const vec3 v(rt_test::uniform(rng, -1e3, 1e3), rt_test::uniform(rng, -1e3, 1e3),
+                     rt_test::uniform(rng, -1e3, 1e3));
+        CHECK(same(rt::max_abs_component(v), by_fmax(v)));
+    }
+}
