@@ -40,22 +40,36 @@ class pcg32 {
         return u < one_minus_epsilon ? u : one_minus_epsilon;
     }
 
-    // Moves the stream delta steps ahead in O(log delta) (Brown, "Random number generation with
-    // arbitrary strides", 1994): same result as calling next_u32() delta times.
-    void advance(std::uint64_t delta) {
-        std::uint64_t acc_mult = 1, acc_plus = 0;
-        std::uint64_t cur_mult = multiplier, cur_plus = inc;
-        while (delta > 0) {
-            if (delta & 1u) {
-                acc_mult *= cur_mult;
-                acc_plus = acc_plus * cur_mult + cur_plus;
-            }
-            cur_plus = (cur_mult + 1) * cur_plus;
-            cur_mult *= cur_mult;
-            delta >>= 1u;
+    // n calls of next_u32() move the state by an affine map, state -> mult * state + plus * inc,
+    // whose two numbers do not depend on the stream: plus is the sum of multiplier^i for i < n
+    // (Brown, "Random number generation with arbitrary strides", 1994). So the jump for a
+    // stride is computed once, for every stream, and raised to a power in O(log power) steps.
+    struct jump {
+        std::uint64_t mult = 1, plus = 0;  // the identity: no step
+        // This jump, then `next` (all jumps of one generator commute).
+        constexpr jump then(const jump& next) const {
+            return {mult * next.mult, next.mult * plus + next.plus};
         }
-        state = acc_mult * state + acc_plus;
+    };
+
+    // `step` made `times` times, by squaring: O(log times).
+    static constexpr jump repeated(jump step, std::uint64_t times) {
+        jump total;
+        while (times > 0) {
+            if (times & 1u) total = total.then(step);
+            step = step.then(step);
+            times >>= 1u;
+        }
+        return total;
     }
+    // What `steps` calls of next_u32() do.
+    static constexpr jump jump_of(std::uint64_t steps) { return repeated({multiplier, 1}, steps); }
+
+    void apply(const jump& j) { state = j.mult * state + j.plus * inc; }
+
+    // Moves the stream delta steps ahead in O(log delta): the same state as calling next_u32()
+    // delta times (all of this arithmetic is exact, modulo 2^64).
+    void advance(std::uint64_t delta) { apply(jump_of(delta)); }
 
   private:
     static constexpr std::uint64_t multiplier = 0x5851f42d4c957f2dULL;

@@ -87,6 +87,61 @@ TEST_CASE("rng: advance composes and the period is 2^64", "[rng][ch01]") {
     CHECK(same_outputs(halves, pcg32(9, 1), 8));
 }
 
+TEST_CASE("rng: a stride's jump raised to a power is the jump of the product", "[rng][ch01]") {
+    // The sampler starts pixel sample s at s * 65536 steps by raising the 65536-step jump to the
+    // power s: the same state as jumping s * 65536 steps at once, for every stream, and as
+    // stepping where that is short enough to step.
+    rt::pcg32 picks(23, 4);
+    for (int i = 0; i < 200; ++i) {
+        const std::uint64_t stride = picks.next_u32() % 100000 + 1;
+        const std::uint64_t times  = i < 100 ? std::uint64_t(i) : picks.next_u32();
+        const std::uint64_t stream = (std::uint64_t(picks.next_u32()) << 32u) | picks.next_u32();
+        CAPTURE(stride, times, stream);
+        pcg32 powered(stream, 7), direct(stream, 7);
+        powered.apply(pcg32::repeated(pcg32::jump_of(stride), times));
+        direct.advance(stride * times);
+        CHECK(same_outputs(powered, direct, 4));
+    }
+    pcg32 stepped(5, 6), powered(5, 6);
+    for (int i = 0; i < 3 * 65536; ++i) stepped.next_u32();
+    powered.apply(pcg32::repeated(rt::sampler::sample_stride, 3));
+    CHECK(same_outputs(stepped, powered, 8));
+}
+
+TEST_CASE("rng: jump_of is Brown's jump-ahead, the pixel samples' positions unchanged",
+          "[rng][ch01]") {
+    // The definition every image so far was rendered with: advance() as Brown's loop over the
+    // bits of delta, with the stream's increment inside. The jump must give its state bit for
+    // bit, or every golden image would change.
+    auto brown = [](std::uint64_t state, std::uint64_t inc, std::uint64_t delta) {
+        std::uint64_t acc_mult = 1, acc_plus = 0;
+        std::uint64_t cur_mult = 0x5851f42d4c957f2dULL, cur_plus = inc;
+        while (delta > 0) {
+            if (delta & 1u) {
+                acc_mult *= cur_mult;
+                acc_plus = acc_plus * cur_mult + cur_plus;
+            }
+            cur_plus = (cur_mult + 1) * cur_plus;
+            cur_mult *= cur_mult;
+            delta >>= 1u;
+        }
+        return acc_mult * state + acc_plus;
+    };
+    rt::pcg32 picks(29, 8);
+    for (int i = 0; i < 1000; ++i) {
+        const std::uint64_t state = (std::uint64_t(picks.next_u32()) << 32u) | picks.next_u32();
+        const std::uint64_t inc = (std::uint64_t(picks.next_u32()) << 32u) | picks.next_u32() | 1u;
+        const std::uint64_t delta =
+            i < 500 ? std::uint64_t(i) * 65536
+                    : (std::uint64_t(picks.next_u32()) << 32u) | picks.next_u32();
+        const pcg32::jump j = pcg32::jump_of(delta);
+        CAPTURE(state, inc, delta);
+        CHECK(j.mult * state + j.plus * inc == brown(state, inc, delta));
+        const pcg32::jump s = pcg32::repeated(rt::sampler::sample_stride, std::uint64_t(i));
+        CHECK(s.mult * state + s.plus * inc == brown(state, inc, std::uint64_t(i) * 65536));
+    }
+}
+
 TEST_CASE("rng: different sequences and seeds give different streams", "[rng][ch01]") {
     // Two unrelated streams agree at one position with probability 2^-32: over 1000 positions
     // a single coincidence is already unlikely (2.3e-7), so allow at most one.
