@@ -14,6 +14,7 @@ import os
 import platform
 import re
 import subprocess
+import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 REPORT = os.path.join(ROOT, "report")
@@ -191,7 +192,21 @@ def machine():
     return f"{os.cpu_count()} cores, {cpu}; {compiler.splitlines()[0] if compiler else 'g++'}"
 
 
+MACHINE = os.path.join(REPORT, "figures", "machine.txt")
+
+
 def main():
+    # The machine the figures were timed on is recorded when they are rendered: the report may
+    # be written again later, elsewhere (after tools/benchmark, say), and must not claim this one.
+    if sys.argv[1:] == ["--record-machine"]:
+        with open(MACHINE, "w") as f:
+            f.write(machine() + "\n")
+        return
+    try:
+        with open(MACHINE) as f:
+            timed_on = f.read().strip()
+    except OSError:
+        raise SystemExit(f"make_report: {MACHINE} is missing: run tools/render-report")
     figures = read_figures()
     timings = {figure: (extra, t) for figure, extra, t in read_timings()}
     for figure, chapter, _extra, _caption in figures:
@@ -206,7 +221,7 @@ def main():
 
     out = [open(os.path.join(REPORT, "intro.md")).read().rstrip(), ""]
     out += ["## Speed of every figure", "",
-            f"Measured by `tools/render-report` on {machine()}, Release build, double scalars.",
+            f"Measured by `tools/render-report` on {timed_on}, Release build, double scalars.",
             "A sample is one camera path.", "",
             "| figure | size | spp | max depth | threads | time (s) | M samples/s |",
             "|---|---|---|---|---|---|---|"]
