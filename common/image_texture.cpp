@@ -35,12 +35,11 @@ const std::array<real, 256>& srgb8_to_linear() {
     throw user_error("cannot read texture '" + path + "': " + reason);
 }
 
-// stb's reason for its last failure, in brackets, or nothing: it gives none for some broken
-// files (a PNG cut just before its end chunk).
-// stb's reason, in parentheses. Some reasons quote the file's own bytes (an unknown PNG chunk
-// "XXXX PNG chunk not known" names its four type bytes), which a hostile file can make a newline
-// or an escape sequence: every byte outside printable ASCII is shown as \xNN, so the error stays
-// one line of plain text.
+// stb's reason for its last failure, in parentheses, or nothing: it gives none for some broken
+// files (a PNG cut just before its end chunk). Some reasons quote the file's own bytes (an
+// unknown PNG chunk "XXXX PNG chunk not known" names its four type bytes), which a hostile file
+// can make a newline or an escape sequence: every byte outside printable ASCII is shown as \xNN,
+// so the error stays one line of plain text.
 std::string stb_reason() {
     const char* reason = stbi_failure_reason();
     if (!reason || !*reason) return "";
