@@ -58,6 +58,12 @@ constexpr std::uint32_t laine_karras_permutation(std::uint32_t x, std::uint32_t 
     return x;
 }
 
+// The Owen scramble of the number whose bits, reversed, are `reversed` (owen_scramble below,
+// for callers that already hold the reversed bits).
+constexpr std::uint32_t owen_scramble_of_reversed(std::uint32_t reversed, std::uint32_t key) {
+    return reverse_bits(laine_karras_permutation(reversed, key));
+}
+
 // 32 scrambled bits as a number in [0, 1), kept below 1 as pcg32::uniform() does.
 real to_unit(std::uint32_t bits) {
     constexpr real one_minus_epsilon = real(1) - std::numeric_limits<real>::epsilon() / 2;
@@ -89,7 +95,7 @@ std::uint32_t sobol_sampler::owen_scramble(std::uint32_t x, std::uint32_t key) {
     // Burley's hash-based Owen scramble: reversed, the Laine-Karras permutation makes each bit
     // depend only on the bits below it (the more significant ones of x), which is what an Owen
     // scramble is: every digit flipped by a random function of the digits before it.
-    return reverse_bits(laine_karras_permutation(reverse_bits(x), key));
+    return owen_scramble_of_reversed(reverse_bits(x), key);
 }
 
 std::uint64_t sobol_sampler::draw_key() {
@@ -102,22 +108,22 @@ std::uint64_t sobol_sampler::draw_key() {
 // first one; and dimension 1 comes from tables already reversed. tests/ch16 checks the identity
 // against the plain composition.
 std::uint32_t sobol_sampler::shuffled_index(std::uint32_t key) const {
-    return reverse_bits(laine_karras_permutation(index_reversed, key));
+    return owen_scramble_of_reversed(index_reversed, key);
 }
 
 real sobol_sampler::next_1d() {
     std::uint64_t key      = draw_key();
     std::uint32_t shuffled = shuffled_index(std::uint32_t(key));
-    return to_unit(reverse_bits(laine_karras_permutation(shuffled, std::uint32_t(key >> 32u))));
+    return to_unit(owen_scramble_of_reversed(shuffled, std::uint32_t(key >> 32u)));
 }
 
 sample2 sobol_sampler::next_2d() {
     std::uint64_t key      = draw_key();
     std::uint64_t key2     = mix_bits(key);
     std::uint32_t shuffled = shuffled_index(std::uint32_t(key));
-    return {to_unit(reverse_bits(laine_karras_permutation(shuffled, std::uint32_t(key >> 32u)))),
-            to_unit(reverse_bits(
-                laine_karras_permutation(dimension_1_reversed(shuffled), std::uint32_t(key2))))};
+    return {
+        to_unit(owen_scramble_of_reversed(shuffled, std::uint32_t(key >> 32u))),
+        to_unit(owen_scramble_of_reversed(dimension_1_reversed(shuffled), std::uint32_t(key2)))};
 }
 
 }  // namespace rt
