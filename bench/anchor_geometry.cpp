@@ -1,6 +1,7 @@
 #include "anchor_geometry.h"
 
 #include "ch06_defocus/random_spheres.h"
+#include "ch11_instances/cornell_box.h"
 #include "common/box.h"
 #include "common/instance.h"
 #include "common/lambertian.h"
@@ -69,6 +70,34 @@ anchor_geometry book2_final_geometry() {
     g.left_out =
         "the blue medium in the glass ball and the mist (media: no surface); the cluster's "
         "instance is flattened into 1000 world-space spheres";
+    return g;
+}
+
+anchor_geometry cornell_box_geometry() {
+    using rt::point3, rt::vec3;
+    anchor_geometry g;
+    auto white = std::make_shared<rt::lambertian>(rt::color(0.73, 0.73, 0.73));
+    // The walls and the light of cornell_box(), as its room puts them.
+    cornell_room room =
+        empty_cornell_room({point3(343, 554, 332), vec3(-130, 0, 0), vec3(0, 0, -105), 15});
+    for (const auto& wall : room.walls) g.add(dynamic_cast<const rt::quad&>(*wall.object));
+    // The boxes of cornell_box(): size, turn about y, then the move (placed_box()).
+    struct placed {
+        vec3 size;
+        double degrees;
+        vec3 offset;
+    };
+    for (const placed& b : {placed{vec3(165, 330, 165), 15, vec3(265, 0, 295)},
+                            placed{vec3(165, 165, 165), -18, vec3(130, 0, 65)}}) {
+        const rt::rotate turn(std::make_shared<rt::sphere>(point3(0, 0, 0), 1), rt::axis::y,
+                              b.degrees);
+        for (const auto& face : rt::box_faces(point3(0, 0, 0), point3(0, 0, 0) + b.size, white)) {
+            const auto& q = dynamic_cast<const rt::quad&>(*face.object);
+            g.add(rt::quad(turn.to_world(q.corner()) + b.offset, turn.to_world(q.edge_u()),
+                           turn.to_world(q.edge_v()), white));
+        }
+    }
+    g.left_out = "nothing: the two boxes' instances are flattened into 12 world-space quads";
     return g;
 }
 

@@ -43,4 +43,9 @@ anchor_geometry book1_geometry();
 // whose boundary is no surface).
 anchor_geometry book2_final_geometry();
 
+// Book 2's Cornell box (chapters/ch11_instances/cornell_box.h): the five walls and the light,
+// and the twelve faces of the two boxes, each face turned and moved into the world as the
+// scene's rotate and translate instances place it (an instance of quads is quads).
+anchor_geometry cornell_box_geometry();
+
 }  // namespace rt_bench

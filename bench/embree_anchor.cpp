@@ -9,7 +9,9 @@
 //                  (400 x 225, depth 50): the moving spheres stand at their start;
 //   ch13-recorded  the rays a path trace of book 2's final scene (ch13) at time 0 traces
 //                  (400 x 400, depth 40), against its spheres and quads (anchor_geometry.h
-//                  says what is left out).
+//                  says what is left out);
+//   ch11-recorded  the rays a path trace of book 2's Cornell box (ch11) traces (200 x 200,
+//                  depth 50), against its walls, light and the boxes' faces in the world.
 // Each batch is timed `repeat` times, ours and Embree in turn; the median counts. Hit counts
 // of the two must agree up to rays that graze an edge or a silhouette (float against double).
 #include <time.h>
@@ -28,6 +30,7 @@
 
 #include "anchor_geometry.h"
 #include "book1_rays.h"
+#include "ch11_instances/cornell_box.h"
 #include "ch13_final/final_scene.h"
 #include "common/bvh.h"
 #include "common/path_tracer.h"
@@ -244,6 +247,14 @@ rt::scene book2_final_at_time_0() {
     return sc;
 }
 
+// Book 2's Cornell box (ch11) at issue 11's settings.
+rt::scene cornell_box_at_issue_settings() {
+    rt::scene sc          = cornell_box();
+    sc.settings.width     = 200;
+    sc.settings.max_depth = 50;
+    return sc;
+}
+
 // The recorded batch of sc, with about `rays` rays.
 batch recorded_batch(const std::string& name, const both_tracers& tracers, const rt::scene& sc,
                      std::size_t rays) {
@@ -280,9 +291,10 @@ int main(int argc, char** argv) {
     }
 
     try {
-        const anchor_geometry book1 = rt_bench::book1_geometry();
-        const anchor_geometry book2 = rt_bench::book2_final_geometry();
-        const both_tracers book1_tracers(book1), book2_tracers(book2);
+        const anchor_geometry book1   = rt_bench::book1_geometry();
+        const anchor_geometry book2   = rt_bench::book2_final_geometry();
+        const anchor_geometry cornell = rt_bench::cornell_box_geometry();
+        const both_tracers book1_tracers(book1), book2_tracers(book2), cornell_tracers(cornell);
 
         std::vector<batch> batches;
         rt::film f         = rt_bench::book1_film();
@@ -299,6 +311,8 @@ int main(int argc, char** argv) {
             recorded_batch("ch07-recorded", book1_tracers, bouncing_spheres_at_time_0(), rays));
         batches.push_back(
             recorded_batch("ch13-recorded", book2_tracers, book2_final_at_time_0(), rays));
+        batches.push_back(recorded_batch("ch11-recorded", cornell_tracers,
+                                         cornell_box_at_issue_settings(), rays));
 
         std::vector<result> results;
         for (const batch& b : batches) results.push_back(measure(b, repeat));

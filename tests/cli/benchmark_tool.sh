@@ -8,9 +8,9 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 "$src/tools/benchmark" --quick --build "$build" --out-dir "$tmp" 2>"$tmp/log" ||
     { cat "$tmp/log"; echo "FAIL: tools/benchmark --quick failed"; exit 1; }
-python3 - "$tmp" <<'EOF_CHECK'
+python3 - "$tmp" "$src" <<'EOF_CHECK'
 import json, sys, os
-d = sys.argv[1]
+d, src = sys.argv[1], sys.argv[2]
 data = json.load(open(os.path.join(d, "benchmarks.json")))
 problems = []
 for key in ("commit", "date", "machine", "compiler", "runs", "scenes"):
@@ -47,6 +47,42 @@ md = open(os.path.join(d, "performance.md")).read()
 for s in data.get("scenes", []):
     if f"`{s['chapter']} {s['args']}`" not in md:
         problems.append(f"performance.md has no row for {s['name']}")
+# What the targets ask of one ray: each row restated from the rates and the committed Embree
+# anchor (report/data/embree_anchor.json), book 1 weighting one camera ray per sample.
+anchor_path = os.path.join(src, "report", "data", "embree_anchor.json")
+anchor = {b["batch"]: b for b in json.load(open(anchor_path))["batches"]} if os.path.exists(anchor_path) else {}
+batches = {"book1_bvh": ("book1-camera", "book1-bounce"), "bouncing_bvh": ("ch07-recorded",),
+           "cornell_box": ("ch11-recorded",), "book2_final": ("ch13-recorded",)}
+section = md.split("## What the per-core targets ask of one ray", 1)
+rows_checked = 0
+for s in data.get("scenes", []):
+    names = batches.get(s["name"])
+    if not (s["target"] and names and all(n in anchor for n in names)):
+        continue
+    if len(section) < 2:
+        problems.append("performance.md has no table of what the targets ask of one ray")
+        break
+    row = [l for l in section[1].splitlines() if l.startswith(f"| {s['description']} |")]
+    if len(row) != 1:
+        problems.append(f"what the targets ask: {len(row)} rows for {s['name']}")
+        continue
+    cells = [float(c) for c in row[0].strip("|").split("|")[1:]]
+    one = s["one_thread"]
+    rps = one["rays_per_second"] / one["samples_per_second"]
+    needed = s["target"] * s["book"] * 1e6
+    ns = {who: [1e9 / anchor[n][f"{who}_rays_per_second"] for n in names] for who in ("embree", "ours")}
+    for who, v in ns.items():
+        ns[who] = v[0] if len(v) == 1 else v[0] / rps + v[1] * (1 - 1 / rps)
+    allowed = 1e9 / (needed * rps)
+    want = [needed * 1e-6, rps, needed * rps * 1e-6, allowed, ns["embree"], allowed - ns["embree"],
+            1e9 / one["rays_per_second"], ns["ours"], 1e9 / one["rays_per_second"] - ns["ours"]]
+    tolerance = [0.006, 0.006, 0.006, 0.6, 0.6, 1.1, 0.6, 0.6, 1.1]  # the table's rounding
+    for k, (got, w, tol) in enumerate(zip(cells, want, tolerance)):
+        if abs(got - w) > tol:
+            problems.append(f"what the targets ask, {s['name']}, column {k + 2}: {got}, want {w:.3f}")
+    rows_checked += 1
+if anchor and rows_checked != 4:
+    problems.append(f"what the targets ask: {rows_checked} scenes checked, want 4")
 for p in problems:
     print("FAIL:", p)
 sys.exit(1 if problems else 0)
@@ -66,4 +102,4 @@ fi
 [ "$(wc -l <"$tmp/log")" -eq 1 ] && grep -q "benchmarks.json" "$tmp/log" ||
     { cat "$tmp/log"; echo "FAIL: --rewrite without data: not one line naming benchmarks.json"; exit 1; }
 [ ! -e "$tmp/empty/performance.md" ] || { echo "FAIL: --rewrite without data wrote a file"; exit 1; }
-echo "tools/benchmark --quick: 6 scenes, JSON, make_report lines and performance.md consistent; --rewrite reproduces it"
+echo "tools/benchmark --quick: 6 scenes, JSON, make_report lines and performance.md consistent (what the targets ask of one ray restated); --rewrite reproduces it"
