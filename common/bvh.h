@@ -8,9 +8,9 @@
 // Stored for speed, as the same binary tree with every other level folded into its parent: a
 // wide node holds up to four children's boxes side by side, tested together by vector
 // instructions, and is visited in the binary tree's own order, so the BVH tests the same objects
-// in the same order as a binary one would. The leaves keep their spheres by type, as plain
-// arrays of fields, so testing one is an inlined hit_sphere() instead of a virtual call; any
-// other object is asked through hittable::hit.
+// in the same order as a binary one would. The leaves keep their spheres and quads by type, as
+// plain arrays of fields, so testing one is an inlined hit_sphere() or hit_quad() instead of a
+// virtual call; any other object is asked through hittable::hit.
 #pragma once
 
 #include <cstdint>
@@ -19,6 +19,7 @@
 
 #include "bounded.h"
 #include "moving_sphere.h"
+#include "quad.h"
 
 namespace rt {
 
@@ -70,10 +71,10 @@ class bvh : public bounded_hittable {
     static constexpr std::uint32_t leaf_bit = 0x80000000u;
 
     // A leaf: its objects from `first` on in `objects` (static spheres, then moving spheres, then
-    // the rest), and where its spheres and others start in the typed arrays.
+    // quads, then the rest), and where each kind starts in its typed array.
     struct leaf {
-        std::uint32_t first, first_sphere, first_moving, first_other;
-        std::uint16_t sphere_count, moving_count, other_count;
+        std::uint32_t first, first_sphere, first_moving, first_quad, first_other;
+        std::uint16_t sphere_count, moving_count, quad_count, other_count;
     };
     // A sphere's fields, copied from it: tested as sphere::hit() tests it (same hit_sphere()).
     struct static_sphere {
@@ -92,6 +93,13 @@ class bvh : public bounded_hittable {
 
     std::uint32_t build(std::vector<build_node>& tree, std::vector<build_item>& items,
                         std::size_t begin, std::size_t end, int level);
+    // A quad's fields, tested as quad::hit() tests it (same hit_quad()).
+    struct quad_fields {
+        quad_shape shape;
+        const material* mat;
+        const hittable* object;
+    };
+
     std::uint32_t pack(const std::vector<build_node>& tree, std::uint32_t index,
                        const std::vector<bounded_object>& input,
                        const std::vector<build_item>& items);
@@ -109,11 +117,12 @@ class bvh : public bounded_hittable {
     std::vector<node> nodes;
     std::vector<leaf> leaves;
     // Each leaf's objects, contiguous, in the order its typed arrays list them: static spheres,
-    // then moving spheres, then the rest.
+    // then moving spheres, then quads, then the rest.
     std::vector<std::shared_ptr<hittable>> objects;
     std::vector<const hittable*> leaf_objects;  // the same, as plain pointers
     std::vector<static_sphere> spheres;
     std::vector<moving_sphere_fields> moving_spheres;
+    std::vector<quad_fields> quads;
     std::vector<const hittable*> others;
 };
 

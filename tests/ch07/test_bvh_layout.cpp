@@ -1,7 +1,8 @@
 // Tests for how bvh.h stores its tree for speed (chapter 07): wide nodes of up to four boxes, the
-// split rule that gives small flat objects their own boxes, and leaves that keep spheres by type.
+// split rule that gives small flat objects their own boxes, and leaves that keep spheres and quads
+// by type.
 // test_bvh.cpp checks that the answers equal the flat list's bit for bit; these check that the
-// speed-ups do what they are for, and that only exact spheres skip the virtual call.
+// speed-ups do what they are for, and that only exact spheres and quads skip the virtual call.
 #include <catch2/catch.hpp>
 #include <memory>
 #include <vector>
@@ -18,7 +19,7 @@
 namespace {
 
 using rt::aabb, rt::interval, rt::point3, rt::real, rt::vec3;
-using rt_test::any_material, rt_test::random_unit, rt_test::uniform;
+using rt_test::any_material, rt_test::exactly, rt_test::random_unit, rt_test::uniform;
 
 // A point uniform in the cube [lo, hi)^3, one draw per statement (so the order is fixed).
 point3 random_point(rt::pcg32& rng, real lo, real hi) {
@@ -48,6 +49,17 @@ struct counting_sphere : rt::sphere {
     bool hit(const rt::ray& r, interval ray_t, rt::hit_record& rec) const override {
         ++*tests;
         return rt::sphere::hit(r, ray_t, rec);
+    }
+};
+
+// A quad type of its own (derived from rt::quad) that counts its tests.
+struct counting_quad : rt::quad {
+    long long* tests;
+    counting_quad(const point3& q, const vec3& u, const vec3& v, long long* t)
+        : rt::quad(q, u, v, any_material()), tests(t) {}
+    bool hit(const rt::ray& r, interval ray_t, rt::hit_record& rec) const override {
+        ++*tests;
+        return rt::quad::hit(r, ray_t, rec);
     }
 };
 
@@ -86,23 +98,34 @@ TEST_CASE("bvh: the walls of a room each get their own box, so a ray tests about
     CHECK(tests < rays + rays / 5);
 }
 
-TEST_CASE("bvh: only exact spheres and moving spheres skip hit(); derived types are asked",
+TEST_CASE("bvh: only exact spheres, moving spheres and quads skip hit(), derived types are asked",
           "[ch07]") {
-    // The leaves test spheres from copies of their fields, as sphere::hit would. A type derived
-    // from sphere may answer differently, so the tree must ask it through its own hit().
+    // The leaves test spheres and quads from copies of their fields, as sphere::hit and
+    // quad::hit would. A type derived from either may answer differently, so the tree must ask
+    // it through its own hit().
     long long tests = 0;
     std::vector<rt::bounded_object> objects;
     rt::hittable_list list;
     rt::pcg32 rng(22, 7);
-    for (int i = 0; i < 60; ++i) {
+    for (int i = 0; i < 100; ++i) {
         const point3 c    = random_point(rng, -10, 10);
         const real radius = uniform(rng, real(0.3), 2);
+        const vec3 u      = 2 * radius * random_unit(rng);
+        const vec3 v      = 2 * radius * random_unit(rng);
         std::shared_ptr<rt::hittable> shape;
-        if (i % 3 == 0) {
+        if (i % 5 == 0) {
             auto s = std::make_shared<counting_sphere>(c, radius, &tests);
             objects.emplace_back(std::static_pointer_cast<rt::sphere>(s));
             shape = s;
-        } else if (i % 3 == 1) {
+        } else if (i % 5 == 3) {
+            auto q = std::make_shared<rt::quad>(c, u, v, any_material());
+            objects.emplace_back(q);
+            shape = q;
+        } else if (i % 5 == 4) {
+            auto q = std::make_shared<counting_quad>(c, u, v, &tests);
+            objects.emplace_back(std::static_pointer_cast<rt::quad>(q));
+            shape = q;
+        } else if (i % 5 == 1) {
             auto m =
                 std::make_shared<rt::moving_sphere>(c, c + vec3(0, 1, 0), radius, any_material());
             objects.emplace_back(m);
@@ -128,15 +151,20 @@ TEST_CASE("bvh: only exact spheres and moving spheres skip hit(); derived types 
         tree_tests += tests;
         const bool in_list = list.hit(r, interval(0, rt::infinity), b);
         REQUIRE(in_bvh == in_list);
-        if (in_bvh) {
+        if (in_bvh) {  // the whole record, as the object's own hit() writes it
             ++hits;
             CHECK(a.t == b.t);
+            CHECK(exactly(a.p, b.p));
+            CHECK(a.p_error == b.p_error);
+            CHECK(exactly(a.normal, b.normal));
+            CHECK(a.front_face == b.front_face);
+            CHECK(exactly(a.local, b.local));
             CHECK(a.mat == b.mat);
             CHECK(a.object == b.object);
         }
     }
     CHECK(hits > 100);
-    CHECK(tree_tests > 0);  // the derived spheres were asked
+    CHECK(tree_tests > 0);  // the derived spheres and quads were asked
 }
 
 TEST_CASE("bvh: a tree of one leaf and a tree of many answer alike at every depth", "[ch07]") {
