@@ -90,7 +90,7 @@ TEST_CASE("interrupt: one signal removes every guarded file", "[ch01]") {
     CHECK(dir.entries() == std::vector<std::string>{"not_guarded.tmp"});
 }
 
-TEST_CASE("interrupt: the table holds max_removed_on_interrupt guards; one more throws", "[ch01]") {
+TEST_CASE("interrupt: the table holds max_removed_on_interrupt guards, one more throws", "[ch01]") {
     temp_folder dir("interrupt", "table");
     {
         std::vector<rt::removed_on_interrupt> guards;
@@ -106,7 +106,7 @@ TEST_CASE("interrupt: the table holds max_removed_on_interrupt guards; one more 
         CHECK_NOTHROW(again.emplace_back(dir.file(std::to_string(i))));
 }
 
-TEST_CASE("interrupt: while interrupts are held a signal waits; end() then removes and dies",
+TEST_CASE("interrupt: while interrupts are held a signal waits, end() then removes and dies",
           "[ch01]") {
     for (int s : {SIGINT, SIGTERM, SIGHUP}) {
         INFO("signal " << s);
@@ -127,7 +127,7 @@ TEST_CASE("interrupt: while interrupts are held a signal waits; end() then remov
     }
 }
 
-TEST_CASE("interrupt: a hold that saw no signal ends quietly; signals act at once again",
+TEST_CASE("interrupt: a hold that saw no signal ends quietly, signals act at once again",
           "[ch01]") {
     temp_folder dir("interrupt", "held_quiet");
     const std::string tmp  = dir.file("out.pfm.tmp.1");

@@ -171,7 +171,7 @@ TEST_CASE("output_set: the same path given twice ends with the later file", "[ch
     CHECK(dir.entries() == std::vector<std::string>{"a.pfm"});
 }
 
-TEST_CASE("output_set: at most max_files files; one more is refused", "[ch01]") {
+TEST_CASE("output_set: at most max_files files, one more is refused", "[ch01]") {
     temp_folder dir("output_set", "too_many");
     {
         rt::output_set set;
