@@ -234,26 +234,45 @@ std::uint32_t bvh::pack(const std::vector<build_node>& tree, std::uint32_t index
     const build_node& b = tree[index];
     if (b.count > 0) return pack_leaf(b, input, items);
 
-    // The lanes: each child of this binary node, or that child's two children if it has any,
-    // with the path that leads to it (first or second child, then first or second grandchild)
-    // and the axes that order those choices.
-    struct lane {
-        std::uint32_t binary;  // index in tree
-        int top, second;       // 0: first child, 1: second; second is 0 for a leaf child
-        int child_axis;        // the child's split axis (or -1 for a leaf child)
+    // The lanes: up to four nodes of the binary subtree below this one, none inside another (a
+    // cut). It starts at the two children; while there is room, the interior lane with the
+    // largest box, the one a ray is likeliest to enter (as in build()'s cost), gives way to its
+    // two children. Folding a fixed two levels instead would leave lanes empty where a child is
+    // a leaf, and make deeper wide trees (the walls of a room: four box tests per ray, not
+    // three). Each lane keeps its path from here, which orders the visits below.
+    struct step {
+        int side;  // 0: the binary node's first child, 1: its second
+        int axis;  // the binary node's split axis
     };
-    std::vector<lane> lanes;
-    const std::uint32_t children[2] = {index + 1, b.offset};
-    for (int top = 0; top < 2; ++top) {
-        const build_node& c = tree[children[top]];
-        if (c.count > 0) {
-            lanes.push_back({children[top], top, 0, -1});
-        } else {
-            lanes.push_back({children[top] + 1, top, 0, c.axis});
-            lanes.push_back({c.offset, top, 1, c.axis});
+    struct lane {
+        std::uint32_t binary;    // index in tree
+        std::vector<step> path;  // from this node down, one step per binary level
+    };
+    std::vector<lane> lanes = {{index + 1, {{0, b.axis}}}, {b.offset, {{1, b.axis}}}};
+    while (lanes.size() < 4) {
+        int widest       = -1;
+        real widest_area = 0;
+        for (std::size_t k = 0; k < lanes.size(); ++k) {
+            const build_node& c = tree[lanes[k].binary];
+            // A NaN area (an unbounded box) is taken too: !(a <= b) rather than a > b.
+            if (c.count == 0 && (widest < 0 || !(c.box.half_area() <= widest_area))) {
+                widest      = int(k);
+                widest_area = c.box.half_area();
+            }
         }
+        if (widest < 0) break;  // every lane a leaf
+        const lane parent   = lanes[std::size_t(widest)];
+        const build_node& c = tree[parent.binary];
+        lane first = parent, second = parent;
+        first.binary  = parent.binary + 1;
+        second.binary = c.offset;
+        first.path.push_back({0, c.axis});
+        second.path.push_back({1, c.axis});
+        lanes[std::size_t(widest)] = first;
+        lanes.insert(lanes.begin() + widest + 1, second);
     }
 
+    wide_node_area += b.box.half_area();
     const auto here = std::uint32_t(nodes.size());
     nodes.push_back({});
     std::uint32_t child[4] = {0, 0, 0, 0};
@@ -274,15 +293,20 @@ std::uint32_t bvh::pack(const std::vector<build_node>& tree, std::uint32_t index
     }
     for (int k = 0; k < 4; ++k) n.child[k] = child[k];
     // The binary tree's visiting order: at each level the first child first, unless the ray runs
-    // towards smaller coordinates on that level's split axis. Unused lanes go last.
+    // towards smaller coordinates on that level's split axis. So a lane's rank is its path with
+    // each side flipped so, read as a word; no path begins another's (the lanes are disjoint
+    // subtrees), so comparing words orders them. Unused lanes go last.
     for (int octant = 0; octant < 8; ++octant) {
-        auto flip = [&](int axis) { return axis >= 0 && (octant >> axis & 1) ? 1 : 0; };
-        std::array<int, 4> rank{4, 5, 6, 7}, lane_of{};
-        for (std::size_t k = 0; k < lanes.size(); ++k)
-            rank[k] = 2 * (lanes[k].top ^ flip(b.axis)) +
-                      (lanes[k].child_axis < 0 ? 0 : lanes[k].second ^ flip(lanes[k].child_axis));
-        for (int k = 0; k < 4; ++k) lane_of[k] = k;
-        std::sort(lane_of.begin(), lane_of.end(), [&](int x, int y) { return rank[x] < rank[y]; });
+        auto rank = [&](std::size_t k) {
+            std::vector<int> word;
+            for (const step& st : lanes[k].path) word.push_back(st.side ^ (octant >> st.axis & 1));
+            return word;
+        };
+        std::array<std::size_t, 4> lane_of{0, 1, 2, 3};
+        std::sort(lane_of.begin(), lane_of.end(), [&](std::size_t x, std::size_t y) {
+            if (x >= lanes.size() || y >= lanes.size()) return x < y;  // unused lanes are last
+            return rank(x) < rank(y);
+        });
         n.order[octant] =
             std::uint8_t(lane_of[0] | lane_of[1] << 2 | lane_of[2] << 4 | lane_of[3] << 6);
     }
@@ -427,13 +451,13 @@ RT_ALSO_FOR_AVX2 bool bvh::closest_hit(const ray& r, interval ray_t, hit_record&
 
     // Children still to visit, with where the ray enters them: when one comes up, a hit found
     // since then may already be nearer, and the child is skipped without another test.
-    // A wide node leaves at most 3 of its children waiting, and the wide tree has at most half
-    // the binary tree's levels.
+    // A wide node leaves at most 3 of its children waiting, and the wide tree has no more levels
+    // than the binary tree.
     struct pending {
         std::uint32_t child;
         real t_enter;
     };
-    pending stack[2 * max_traversal_depth];
+    pending stack[3 * max_traversal_depth];
     int top               = 0;
     std::uint32_t current = root;
     bool hit_anything     = false;
@@ -477,7 +501,7 @@ RT_ALSO_FOR_AVX2 real bvh::shadow_fraction(const ray& r, interval ray_t) const {
     // Every child the box test lets through, in the binary tree's first-child-first order (octant
     // 0), so that the fractions multiply in the same order whatever the ray's direction.
     const slab_ray<real4> sr(r);
-    std::uint32_t stack[2 * max_traversal_depth];
+    std::uint32_t stack[3 * max_traversal_depth + 1];  // as closest_hit's, and the one popped
     int top               = 0;
     std::uint32_t current = root;
     real fraction         = 1;

@@ -5,11 +5,11 @@
 // the expected number of object tests, since a random ray that crosses the parent crosses a
 // child box with probability area ratio. Traversal visits the nearer child first, and skips any
 // box farther than the nearest hit found so far.
-// Stored for speed, as the same binary tree with every other level folded into its parent: a
-// wide node holds up to four children's boxes side by side, tested together by vector
-// instructions, and is visited in the binary tree's own order, so the BVH tests the same objects
-// in the same order as a binary one would. The leaves keep their spheres and quads by type, as
-// plain arrays of fields, so testing one is an inlined hit_sphere() or hit_quad() instead of a
+// Stored for speed, as the same binary tree with levels folded into their parents: a wide node
+// holds up to four descendants' boxes side by side (the widest expanded first), tested together by
+// vector instructions, and is visited in the binary tree's own order, so the BVH tests the same
+// objects in the same order as a binary one would. The leaves keep their spheres and quads by type,
+// as plain arrays of fields, so testing one is an inlined hit_sphere() or hit_quad() instead of a
 // virtual call; any other object is asked through hittable::hit.
 #pragma once
 
@@ -44,6 +44,10 @@ class bvh : public bounded_hittable {
     std::size_t node_count() const { return boxes_in_tree; }
     std::size_t object_count() const { return objects.size(); }
     int depth() const { return levels; }
+    // The surface area heuristic's measure of the stored tree, as build() prices splits: a ray
+    // that crosses the root's box crosses a box inside it with probability area ratio, so a
+    // random ray tests on average this many wide nodes. Fewer is faster.
+    real expected_node_tests() const { return wide_node_area / box.half_area(); }
 
   private:
     struct build_node;
@@ -54,8 +58,8 @@ class bvh : public bounded_hittable {
     // one with AVX2 (bvh::hit is also compiled for AVX2, chosen at run time).
     using real4 = real __attribute__((vector_size(4 * sizeof(real))));
 
-    // A wide node: the binary tree's node with its children's children pulled up, so that one
-    // test covers up to four boxes. The binary tree's inner boxes are then never tested: they
+    // A wide node: the binary tree's node with up to four of its descendants pulled up, so that
+    // one test covers up to four boxes. The binary tree's inner boxes are then never tested: they
     // contain their children's, so a ray that misses one misses its children too. Each lane is a
     // child: a wide node's index, or leaf_bit | a leaf index; unused lanes hold an empty box.
     // Aligned to a real4 on purpose: GCC gives a 32-byte vector only 16-byte alignment where
@@ -112,6 +116,7 @@ class bvh : public bounded_hittable {
 
     aabb box;
     std::size_t boxes_in_tree = 0;
+    real wide_node_area       = 0;  // the wide nodes' half areas, summed (the measure above)
     int levels                = 0;
     std::uint32_t root = leaf_bit;  // where traversal starts: a node, or a leaf (none if empty)
     std::vector<node> nodes;
