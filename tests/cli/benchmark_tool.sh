@@ -102,4 +102,34 @@ fi
 [ "$(wc -l <"$tmp/log")" -eq 1 ] && grep -q "benchmarks.json" "$tmp/log" ||
     { cat "$tmp/log"; echo "FAIL: --rewrite without data: not one line naming benchmarks.json"; exit 1; }
 [ ! -e "$tmp/empty/performance.md" ] || { echo "FAIL: --rewrite without data wrote a file"; exit 1; }
-echo "tools/benchmark --quick: 6 scenes, JSON, make_report lines and performance.md consistent (what the targets ask of one ray restated); --rewrite reproduces it"
+# --versus: the same build against itself, side by side: every scene, a ratio per round, their
+# median, and the section of performance.md written from them.
+"$src/tools/benchmark" --versus "$build" --quick --build "$build" --out-dir "$tmp" 2>"$tmp/log" ||
+    { cat "$tmp/log"; echo "FAIL: tools/benchmark --versus failed"; exit 1; }
+python3 - "$tmp" <<'EOF_VERSUS'
+import json, sys, os
+d = sys.argv[1]
+v = json.load(open(os.path.join(d, "versus.json")))
+problems = []
+if [s["name"] for s in v["scenes"]] != ["book1_final", "book1_bvh", "bouncing_bvh",
+                                         "bouncing_list", "cornell_box", "book2_final"]:
+    problems.append("versus.json: not the six scenes")
+for s in v["scenes"]:
+    want = [n / o for n, o in zip(s["new_samples_per_second"], s["old_samples_per_second"])]
+    if s["ratios"] != want or len(want) != v["runs"] or not all(r > 0 for r in want):
+        problems.append(f"versus {s['name']}: ratios {s['ratios']}, want {want}")
+    if s["median_ratio"] not in s["ratios"]:
+        problems.append(f"versus {s['name']}: median {s['median_ratio']} is no round's ratio")
+md = open(os.path.join(d, "performance.md")).read()
+if "## Side by side with an earlier build" not in md or f"**{v['scenes'][0]['median_ratio']:.3f}**" not in md:
+    problems.append("performance.md has no side-by-side section from versus.json")
+for p in problems:
+    print("FAIL:", p)
+sys.exit(1 if problems else 0)
+EOF_VERSUS
+if "$src/tools/benchmark" --versus "$tmp/no-build" --quick --build "$build" --out-dir "$tmp" 2>"$tmp/log"; then
+    echo "FAIL: --versus without an old build succeeded"; exit 1
+fi
+[ "$(wc -l <"$tmp/log")" -eq 1 ] && grep -q "no-build" "$tmp/log" ||
+    { cat "$tmp/log"; echo "FAIL: --versus without a build: not one line naming it"; exit 1; }
+echo "tools/benchmark --quick: 6 scenes, JSON, make_report lines and performance.md consistent (what the targets ask of one ray restated); --rewrite reproduces it; --versus side by side"
