@@ -69,7 +69,7 @@ class rotate : public bounded_hittable {
     vec3 turn(const vec3& v, real sin_angle) const;
 
     std::shared_ptr<hittable> object;
-    int a, b;  // the two coordinates that turn: (y, z) about x, (z, x) about y, (x, y) about z
+    axis about;  // the two coordinates that turn: (y, z) about x, (z, x) about y, (x, y) about z
     real sin_theta, cos_theta;
     aabb box;
 };
