@@ -346,12 +346,14 @@ template <typename mask4>
 [[gnu::always_inline]] inline unsigned lane_bits(const mask4& inside) {
 #if defined(__x86_64__) && defined(RT_SCALAR_FLOAT)
     using float4 = float __attribute__((vector_size(16)));
-    return unsigned(__builtin_ia32_movmskps(reinterpret_cast<const float4&>(inside)));
+    return unsigned(__builtin_ia32_movmskps((float4)inside));  // a vector cast keeps the bits
 #elif defined(__x86_64__)
+    using double4      = double __attribute__((vector_size(32)));
     using double2      = double __attribute__((vector_size(16)));
-    const auto* halves = reinterpret_cast<const double2*>(&inside);
-    return unsigned(__builtin_ia32_movmskpd(halves[0])) |
-           unsigned(__builtin_ia32_movmskpd(halves[1])) << 2;
+    const auto lanes   = (double4)inside;  // a vector cast keeps the bits
+    const double2 low  = __builtin_shufflevector(lanes, lanes, 0, 1);
+    const double2 high = __builtin_shufflevector(lanes, lanes, 2, 3);
+    return unsigned(__builtin_ia32_movmskpd(low)) | unsigned(__builtin_ia32_movmskpd(high)) << 2;
 #else
     return unsigned(inside[0] & 1) | unsigned(inside[1] & 2) | unsigned(inside[2] & 4) |
            unsigned(inside[3] & 8);
