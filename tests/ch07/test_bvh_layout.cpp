@@ -202,9 +202,10 @@ TEST_CASE("bvh: wide nodes expand their widest lanes first, so a ray tests fewer
 }
 
 TEST_CASE("bvh: a tree of one leaf and a tree of many answer alike at every depth", "[ch07]") {
-    // Wide nodes fold every other level of the binary tree: trees of 1 to 40 objects give wide
-    // trees with one, two and three levels, with unused lanes, and with leaves directly below
-    // the root. Each must agree with the list.
+    // Wide nodes fold up to four descendants of a binary node into one: trees of 1 to 40 objects
+    // give wide trees with one, two and three levels, with unused lanes, with lanes one, two and
+    // three binary levels down, and with leaves directly below the root. Each must agree with
+    // the list.
     rt::pcg32 rng(23, 7);
     for (int n = 1; n <= 40; ++n) {
         std::vector<rt::bounded_object> objects;
