@@ -95,8 +95,6 @@ class bvh : public bounded_hittable {
         const hittable* object;
     };
 
-    std::uint32_t build(std::vector<build_node>& tree, std::vector<build_item>& items,
-                        std::size_t begin, std::size_t end, int level);
     // A quad's fields, tested as quad::hit() tests it (same hit_quad()).
     struct quad_fields {
         quad_shape shape;
@@ -104,6 +102,8 @@ class bvh : public bounded_hittable {
         const hittable* object;
     };
 
+    std::uint32_t build(std::vector<build_node>& tree, std::vector<build_item>& items,
+                        std::size_t begin, std::size_t end, int level);
     std::uint32_t pack(const std::vector<build_node>& tree, std::uint32_t index,
                        const std::vector<bounded_object>& input,
                        const std::vector<build_item>& items);
