@@ -2,9 +2,9 @@
 
 #include "ch06_defocus/random_spheres.h"
 #include "ch11_instances/cornell_box.h"
-#include "common/box.h"
-#include "common/instance.h"
-#include "common/lambertian.h"
+#include "rt/geometry/box.h"
+#include "rt/geometry/instance.h"
+#include "rt/materials/lambertian.h"
 #include "single_precision.h"
 
 namespace rt_bench {

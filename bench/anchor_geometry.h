@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "common/bounded.h"
+#include "rt/accel/bounded.h"
 
 namespace rt_bench {
 

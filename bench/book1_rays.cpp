@@ -3,8 +3,8 @@
 #include <cmath>
 
 #include "ch06_defocus/random_spheres.h"
-#include "common/onb.h"
-#include "common/sampling.h"
+#include "rt/core/onb.h"
+#include "rt/samplers/sampling.h"
 #include "single_precision.h"
 
 namespace rt_bench {

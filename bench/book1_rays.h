@@ -7,9 +7,9 @@
 #include <memory>
 #include <vector>
 
-#include "common/bounded.h"
-#include "common/film.h"
-#include "common/thin_lens_camera.h"
+#include "rt/accel/bounded.h"
+#include "rt/camera/thin_lens_camera.h"
+#include "rt/render/film.h"
 
 namespace rt_bench {
 

@@ -32,10 +32,10 @@
 #include "book1_rays.h"
 #include "ch11_instances/cornell_box.h"
 #include "ch13_final/final_scene.h"
-#include "common/bvh.h"
-#include "common/path_tracer.h"
 #include "embree_scene.h"
 #include "recorded_rays.h"
+#include "rt/accel/bvh.h"
+#include "rt/integrators/path_tracer.h"
 #include "single_precision.h"
 
 namespace {

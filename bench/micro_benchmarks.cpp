@@ -9,13 +9,13 @@
 #include <vector>
 
 #include "book1_rays.h"
-#include "common/aabb.h"
-#include "common/bvh.h"
-#include "common/lambertian.h"
-#include "common/quad.h"
-#include "common/rng.h"
-#include "common/sampler.h"
-#include "common/sphere.h"
+#include "rt/accel/aabb.h"
+#include "rt/accel/bvh.h"
+#include "rt/core/rng.h"
+#include "rt/geometry/quad.h"
+#include "rt/geometry/sphere.h"
+#include "rt/materials/lambertian.h"
+#include "rt/samplers/sampler.h"
 
 namespace {
 

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <limits>
 
-#include "common/isotropic.h"
-#include "common/path_tracer.h"
+#include "rt/integrators/path_tracer.h"
+#include "rt/media/isotropic.h"
 #include "single_precision.h"
 
 namespace rt_bench {

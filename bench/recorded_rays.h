@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "common/scene.h"
+#include "rt/scene/scene.h"
 
 namespace rt_bench {
 

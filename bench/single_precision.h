@@ -6,8 +6,8 @@
 
 #include <limits>
 
-#include "common/hittable.h"
-#include "common/ray.h"
+#include "rt/core/ray.h"
+#include "rt/geometry/hittable.h"
 
 namespace rt_bench {
 

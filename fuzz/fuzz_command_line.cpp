@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "common/command_line.h"
+#include "rt/program/command_line.h"
 
 namespace {
 

@@ -17,8 +17,8 @@
 #include <filesystem>
 #include <string>
 
-#include "common/error.h"
-#include "common/image_texture.h"
+#include "rt/core/error.h"
+#include "rt/textures/image_texture.h"
 
 namespace {
 

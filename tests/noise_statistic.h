@@ -28,7 +28,7 @@
 #include <string>
 #include <vector>
 
-#include "common/image.h"
+#include "rt/image/image.h"
 
 namespace rt_test {
 

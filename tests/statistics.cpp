@@ -7,7 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "common/scalar.h"
+#include "rt/core/scalar.h"
 
 namespace rt_test {
 

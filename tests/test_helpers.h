@@ -21,11 +21,11 @@
 #include <system_error>
 #include <vector>
 
-#include "common/image.h"
-#include "common/rng.h"
-#include "common/sampler.h"
-#include "common/scalar.h"
-#include "common/vec3.h"
+#include "rt/core/rng.h"
+#include "rt/core/scalar.h"
+#include "rt/core/vec3.h"
+#include "rt/image/image.h"
+#include "rt/samplers/sampler.h"
 
 namespace rt_test {
 

@@ -3,8 +3,8 @@
 //   color = (1 - a) * white + a * blue,   a = (y + 1) / 2.
 #include <memory>
 
-#include "common/background.h"
-#include "common/command_line.h"
+#include "rt/program/command_line.h"
+#include "rt/scene/background.h"
 
 // Nothing to hit: every ray sees the sky. The camera is chapter 01's own: at the origin, looking
 // down -z with a 90 degree vertical view, 16:9.

@@ -4,10 +4,10 @@
 // as the color 0.5 (n + 1). Several samples per pixel smooth the sphere's edge (anti-aliasing).
 #include <memory>
 
-#include "common/command_line.h"
-#include "common/hittable_list.h"
-#include "common/show_normals.h"
-#include "common/sphere.h"
+#include "rt/geometry/sphere.h"
+#include "rt/integrators/show_normals.h"
+#include "rt/program/command_line.h"
+#include "rt/scene/hittable_list.h"
 
 // A small sphere resting on a huge one that serves as the ground, both in one hittable_list.
 rt::scene sphere_on_ground() {

@@ -2,9 +2,9 @@
 // with density cos(theta) / pi about the normal and attenuates it by its albedo, so after many
 // bounces each pixel estimates L = Le + albedo * L(scattered). Spawned rays start just off the
 // surface (hit_record::spawn_ray), so there is no shadow acne; the PNG is sRGB-encoded.
-#include "common/command_line.h"
-#include "common/path_tracer.h"
 #include "matte_scene.h"
+#include "rt/integrators/path_tracer.h"
+#include "rt/program/command_line.h"
 
 int main(int argc, char** argv) {
     return rt::command_line("ch03_diffuse").run(argc, argv, [] {

@@ -4,11 +4,11 @@
 
 #include <memory>
 
-#include "common/hittable_list.h"
-#include "common/lambertian.h"
-#include "common/quad.h"
-#include "common/scene.h"
-#include "common/sphere.h"
+#include "rt/geometry/quad.h"
+#include "rt/geometry/sphere.h"
+#include "rt/materials/lambertian.h"
+#include "rt/scene/hittable_list.h"
+#include "rt/scene/scene.h"
 
 // Three matte spheres and a small one on a finite xz-rectangle floor, under the sky.
 inline rt::scene matte_spheres_on_floor() {

@@ -4,11 +4,11 @@
 
 #include <memory>
 
-#include "common/hittable_list.h"
-#include "common/lambertian.h"
-#include "common/metal.h"
-#include "common/scene.h"
-#include "common/sphere.h"
+#include "rt/geometry/sphere.h"
+#include "rt/materials/lambertian.h"
+#include "rt/materials/metal.h"
+#include "rt/scene/hittable_list.h"
+#include "rt/scene/scene.h"
 
 // Book 1's metal scene: a matte sphere between a polished and a fully fuzzy metal sphere.
 inline rt::scene metal_spheres() {

@@ -7,12 +7,12 @@
 
 #include <memory>
 
-#include "common/dielectric.h"
-#include "common/hittable_list.h"
-#include "common/lambertian.h"
-#include "common/metal.h"
-#include "common/scene.h"
-#include "common/sphere.h"
+#include "rt/geometry/sphere.h"
+#include "rt/materials/dielectric.h"
+#include "rt/materials/lambertian.h"
+#include "rt/materials/metal.h"
+#include "rt/scene/hittable_list.h"
+#include "rt/scene/scene.h"
 
 inline std::shared_ptr<rt::hittable_list> glass_with_bubble() {
     using rt::color, rt::point3;

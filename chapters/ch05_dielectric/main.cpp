@@ -2,9 +2,9 @@
 // and reflects part of the light, more at grazing angles (Schlick's approximation of Fresnel).
 // One ray continues per hit: reflection with probability R, refraction otherwise; past the
 // critical angle there is only reflection (total internal reflection).
-#include "common/command_line.h"
-#include "common/path_tracer.h"
 #include "glass_scene.h"
+#include "rt/integrators/path_tracer.h"
+#include "rt/program/command_line.h"
 
 int main(int argc, char** argv) {
     return rt::command_line("ch05_dielectric").run(argc, argv, [] {

@@ -9,10 +9,10 @@
 #include <optional>
 
 #include "ch05_dielectric/glass_scene.h"
-#include "common/hittable_list.h"
-#include "common/scene.h"
-#include "common/thin_lens_camera.h"
 #include "random_spheres.h"
+#include "rt/camera/thin_lens_camera.h"
+#include "rt/scene/hittable_list.h"
+#include "rt/scene/scene.h"
 
 // The glass scene from above and to the side: from (3, 3, 2), looking at the middle sphere.
 inline rt::scene glass_scene_through_lens(std::optional<rt::real> aperture,

@@ -6,9 +6,9 @@
 #include <optional>
 #include <string>
 
-#include "common/command_line.h"
-#include "common/path_tracer.h"
 #include "lens_scenes.h"
+#include "rt/integrators/path_tracer.h"
+#include "rt/program/command_line.h"
 
 int main(int argc, char** argv) {
     rt::command_line cli("ch06_defocus");

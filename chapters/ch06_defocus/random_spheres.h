@@ -8,11 +8,11 @@
 #include <memory>
 #include <vector>
 
-#include "common/dielectric.h"
-#include "common/lambertian.h"
-#include "common/metal.h"
-#include "common/rng.h"
-#include "common/sphere.h"
+#include "rt/core/rng.h"
+#include "rt/geometry/sphere.h"
+#include "rt/materials/dielectric.h"
+#include "rt/materials/lambertian.h"
+#include "rt/materials/metal.h"
 
 inline std::vector<std::shared_ptr<rt::sphere>> random_spheres() {
     using rt::color, rt::point3, rt::vec3;

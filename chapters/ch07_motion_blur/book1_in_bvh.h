@@ -10,9 +10,9 @@
 
 #include "ch06_defocus/lens_scenes.h"
 #include "ch06_defocus/random_spheres.h"
-#include "common/bounded.h"
-#include "common/bvh.h"
-#include "common/scene.h"
+#include "rt/accel/bounded.h"
+#include "rt/accel/bvh.h"
+#include "rt/scene/scene.h"
 
 inline rt::scene book1_final_scene_in_bvh(bool use_bvh) {
     rt::scene scene = book1_final_scene(std::nullopt, std::nullopt);

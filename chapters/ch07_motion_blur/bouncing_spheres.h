@@ -8,15 +8,15 @@
 #include <vector>
 
 #include "ch06_defocus/random_spheres.h"
-#include "common/background.h"
-#include "common/bounded.h"
-#include "common/bvh.h"
-#include "common/hittable_list.h"
-#include "common/lambertian.h"
-#include "common/moving_sphere.h"
-#include "common/rng.h"
-#include "common/scene.h"
-#include "common/thin_lens_camera.h"
+#include "rt/accel/bounded.h"
+#include "rt/accel/bvh.h"
+#include "rt/camera/thin_lens_camera.h"
+#include "rt/core/rng.h"
+#include "rt/geometry/moving_sphere.h"
+#include "rt/materials/lambertian.h"
+#include "rt/scene/background.h"
+#include "rt/scene/hittable_list.h"
+#include "rt/scene/scene.h"
 
 // Book 2's bouncing spheres: book 1's final scene in which every small matte sphere moves up
 // by a random height while the shutter is open, under a light blue sky of constant color.

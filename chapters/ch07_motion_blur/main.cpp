@@ -8,8 +8,8 @@
 
 #include "book1_in_bvh.h"
 #include "bouncing_spheres.h"
-#include "common/command_line.h"
-#include "common/path_tracer.h"
+#include "rt/integrators/path_tracer.h"
+#include "rt/program/command_line.h"
 
 int main(int argc, char** argv) {
     rt::command_line cli("ch07_motion_blur");

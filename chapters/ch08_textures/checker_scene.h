@@ -7,13 +7,13 @@
 
 #include <memory>
 
-#include "common/hittable_list.h"
-#include "common/quad.h"
-#include "common/scene.h"
-#include "common/sphere.h"
-#include "common/texture.h"
-#include "common/textured_lambertian.h"
-#include "common/thin_lens_camera.h"
+#include "rt/camera/thin_lens_camera.h"
+#include "rt/geometry/quad.h"
+#include "rt/geometry/sphere.h"
+#include "rt/materials/textured_lambertian.h"
+#include "rt/scene/hittable_list.h"
+#include "rt/scene/scene.h"
+#include "rt/textures/texture.h"
 
 inline rt::scene checkered_spheres() {
     using rt::color, rt::point3, rt::vec3;

@@ -5,12 +5,12 @@
 #include <memory>
 #include <string>
 
-#include "common/background.h"
-#include "common/image_texture.h"
-#include "common/scene.h"
-#include "common/sphere.h"
-#include "common/textured_lambertian.h"
-#include "common/thin_lens_camera.h"
+#include "rt/camera/thin_lens_camera.h"
+#include "rt/geometry/sphere.h"
+#include "rt/materials/textured_lambertian.h"
+#include "rt/scene/background.h"
+#include "rt/scene/scene.h"
+#include "rt/textures/image_texture.h"
 
 // Book 2's earth scene: a globe of radius 2 at the origin, seen from (0, 0, 12).
 inline rt::scene globe(const std::string& texture_file) {

@@ -6,9 +6,9 @@
 #include <string>
 
 #include "checker_scene.h"
-#include "common/command_line.h"
-#include "common/path_tracer.h"
 #include "globe_scene.h"
+#include "rt/integrators/path_tracer.h"
+#include "rt/program/command_line.h"
 
 int main(int argc, char** argv) {
     rt::command_line cli("ch08_textures");

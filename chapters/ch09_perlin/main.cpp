@@ -4,9 +4,9 @@
 //   gray = 0.5 (1 + sin(scale z + 10 turbulence(p))).
 #include <string>
 
-#include "common/command_line.h"
-#include "common/path_tracer.h"
 #include "perlin_spheres.h"
+#include "rt/integrators/path_tracer.h"
+#include "rt/program/command_line.h"
 
 int main(int argc, char** argv) {
     rt::command_line cli("ch09_perlin");

@@ -6,14 +6,14 @@
 #include <memory>
 #include <string>
 
-#include "common/background.h"
-#include "common/hittable_list.h"
-#include "common/image_texture.h"
-#include "common/noise_texture.h"
-#include "common/scene.h"
-#include "common/sphere.h"
-#include "common/textured_lambertian.h"
-#include "common/thin_lens_camera.h"
+#include "rt/camera/thin_lens_camera.h"
+#include "rt/geometry/sphere.h"
+#include "rt/materials/textured_lambertian.h"
+#include "rt/scene/background.h"
+#include "rt/scene/hittable_list.h"
+#include "rt/scene/scene.h"
+#include "rt/textures/image_texture.h"
+#include "rt/textures/noise_texture.h"
 
 // Book 2's two Perlin spheres: a marble ground and a marble sphere sharing one texture.
 inline rt::scene perlin_spheres(const std::string& texture_file, bool with_globe) {

@@ -2,8 +2,8 @@
 // nothing; the path tracer adds emission at every hit, L = Le + attenuation * L(scattered). With
 // a black background all light comes from the emitters. Quads Q + a u + b v make rectangles in
 // any orientation (book 2's first xy, yz and xz rectangles are special cases).
-#include "common/command_line.h"
-#include "common/path_tracer.h"
+#include "rt/integrators/path_tracer.h"
+#include "rt/program/command_line.h"
 #include "simple_light.h"
 
 int main(int argc, char** argv) {

@@ -4,15 +4,15 @@
 
 #include <memory>
 
-#include "common/background.h"
-#include "common/diffuse_light.h"
-#include "common/hittable_list.h"
-#include "common/noise_texture.h"
-#include "common/quad.h"
-#include "common/scene.h"
-#include "common/sphere.h"
-#include "common/textured_lambertian.h"
-#include "common/thin_lens_camera.h"
+#include "rt/camera/thin_lens_camera.h"
+#include "rt/geometry/quad.h"
+#include "rt/geometry/sphere.h"
+#include "rt/materials/diffuse_light.h"
+#include "rt/materials/textured_lambertian.h"
+#include "rt/scene/background.h"
+#include "rt/scene/hittable_list.h"
+#include "rt/scene/scene.h"
+#include "rt/textures/noise_texture.h"
 
 // Book 2's simple light: two marble spheres lit by a spherical and a rectangular light.
 inline rt::scene simple_light() {

@@ -9,14 +9,14 @@
 #include <memory>
 #include <vector>
 
-#include "common/box.h"
-#include "common/bvh.h"
-#include "common/diffuse_light.h"
-#include "common/instance.h"
-#include "common/lambertian.h"
-#include "common/quad.h"
-#include "common/scene.h"
-#include "common/thin_lens_camera.h"
+#include "rt/accel/bvh.h"
+#include "rt/camera/thin_lens_camera.h"
+#include "rt/geometry/box.h"
+#include "rt/geometry/instance.h"
+#include "rt/geometry/quad.h"
+#include "rt/materials/diffuse_light.h"
+#include "rt/materials/lambertian.h"
+#include "rt/scene/scene.h"
 
 // Where the room stands: each point p of book 2's room goes to scale * p + offset. The book's
 // room is the identity; the scale hard case (tests/ch11/test_scale.cpp) renders the same room at

@@ -5,10 +5,10 @@
 // --scene rotations turns three boxes in the same room, about x, y and z.
 #include <string>
 
-#include "common/command_line.h"
-#include "common/path_tracer.h"
 #include "cornell_box.h"
 #include "rotations_scene.h"
+#include "rt/integrators/path_tracer.h"
+#include "rt/program/command_line.h"
 
 int main(int argc, char** argv) {
     rt::command_line cli("ch11_instances");

@@ -7,9 +7,9 @@
 
 #include <memory>
 
-#include "common/box.h"
-#include "common/instance.h"
 #include "cornell_box.h"
+#include "rt/geometry/box.h"
+#include "rt/geometry/instance.h"
 
 // A box of the given size centered on the origin, turned about `about` by `degrees`, then moved
 // so that its center is above (x, z) and its lowest point rests on the floor y = 0.

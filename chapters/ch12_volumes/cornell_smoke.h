@@ -5,8 +5,8 @@
 #include <memory>
 
 #include "ch11_instances/cornell_box.h"
-#include "common/constant_medium.h"
-#include "common/scene.h"
+#include "rt/media/constant_medium.h"
+#include "rt/scene/scene.h"
 
 // Chapter 11's placed box as the boundary of a medium of density 0.01 (the boundary's own
 // material is never seen: the medium replaces its surface).

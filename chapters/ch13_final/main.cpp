@@ -5,9 +5,9 @@
 // (final_scene(400, 250, 4)); its "real" run is --width 800 --spp 10000 --max-depth 40.
 #include <string>
 
-#include "common/command_line.h"
-#include "common/path_tracer.h"
 #include "final_scene.h"
+#include "rt/integrators/path_tracer.h"
+#include "rt/program/command_line.h"
 
 int main(int argc, char** argv) {
     rt::command_line cli("ch13_final");

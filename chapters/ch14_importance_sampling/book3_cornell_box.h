@@ -6,8 +6,8 @@
 #include <memory>
 
 #include "ch11_instances/cornell_box.h"
-#include "common/dielectric.h"
-#include "common/sphere.h"
+#include "rt/geometry/sphere.h"
+#include "rt/materials/dielectric.h"
 
 inline rt::scene book3_cornell_box() {
     using rt::point3, rt::vec3;

@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "book3_cornell_box.h"
-#include "common/command_line.h"
-#include "common/mixture_tracer.h"
-#include "common/path_tracer.h"
+#include "rt/integrators/mixture_tracer.h"
+#include "rt/integrators/path_tracer.h"
+#include "rt/program/command_line.h"
 #include "scene_catalog.h"
 
 int main(int argc, char** argv) {

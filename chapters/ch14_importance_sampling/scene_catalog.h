@@ -26,8 +26,8 @@
 #include "ch11_instances/rotations_scene.h"
 #include "ch12_volumes/cornell_smoke.h"
 #include "ch13_final/final_scene.h"
-#include "common/error.h"
-#include "common/scene.h"
+#include "rt/core/error.h"
+#include "rt/scene/scene.h"
 
 // One entry per scene: its name and how to build it. The texture file is the image the globes
 // of ch08, ch09-globe and ch13 are wrapped in; the other scenes ignore it.

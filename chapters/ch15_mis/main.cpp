@@ -13,10 +13,10 @@
 
 #include "ch14_importance_sampling/book3_cornell_box.h"
 #include "ch14_importance_sampling/scene_catalog.h"
-#include "common/command_line.h"
-#include "common/mis_tracer.h"
-#include "common/mixture_tracer.h"
-#include "common/path_tracer.h"
+#include "rt/integrators/mis_tracer.h"
+#include "rt/integrators/mixture_tracer.h"
+#include "rt/integrators/path_tracer.h"
+#include "rt/program/command_line.h"
 
 int main(int argc, char** argv) {
     rt::command_line cli("ch15_mis");

@@ -13,11 +13,11 @@
 
 #include "ch14_importance_sampling/book3_cornell_box.h"
 #include "ch14_importance_sampling/scene_catalog.h"
-#include "common/command_line.h"
-#include "common/mis_tracer.h"
-#include "common/mixture_tracer.h"
-#include "common/path_tracer.h"
-#include "common/sobol_sampler.h"
+#include "rt/integrators/mis_tracer.h"
+#include "rt/integrators/mixture_tracer.h"
+#include "rt/integrators/path_tracer.h"
+#include "rt/program/command_line.h"
+#include "rt/samplers/sobol_sampler.h"
 
 namespace {
 std::unique_ptr<rt::sampler> make_sobol(std::uint64_t seed) {

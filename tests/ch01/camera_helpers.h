@@ -6,8 +6,8 @@
 #include <limits>
 #include <string>
 
-#include "common/error.h"
-#include "common/film.h"
+#include "rt/core/error.h"
+#include "rt/render/film.h"
 #include "test_helpers.h"
 
 namespace rt_test {

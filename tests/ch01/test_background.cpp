@@ -5,9 +5,9 @@
 #include <cmath>
 #include <limits>
 
-#include "common/background.h"
-#include "common/rng.h"
-#include "common/sampler.h"
+#include "rt/core/rng.h"
+#include "rt/samplers/sampler.h"
+#include "rt/scene/background.h"
 #include "test_helpers.h"
 
 using rt::color;

@@ -10,9 +10,9 @@
 #include <utility>
 
 #include "ch01/camera_helpers.h"
-#include "common/camera.h"
-#include "common/error.h"
-#include "common/film.h"
+#include "rt/camera/camera.h"
+#include "rt/core/error.h"
+#include "rt/render/film.h"
 #include "test_helpers.h"
 
 using Catch::Matchers::Contains;

@@ -5,8 +5,8 @@
 #include <limits>
 #include <string>
 
-#include "common/error.h"
-#include "common/film.h"
+#include "rt/core/error.h"
+#include "rt/render/film.h"
 
 using Catch::Matchers::Contains;
 

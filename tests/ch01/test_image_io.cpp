@@ -20,9 +20,9 @@
 #include <utility>
 #include <vector>
 
-#include "common/display_encoding.h"
-#include "common/error.h"
-#include "common/image_io.h"
+#include "rt/core/error.h"
+#include "rt/image/display_encoding.h"
+#include "rt/image/image_io.h"
 #include "test_helpers.h"
 
 namespace {

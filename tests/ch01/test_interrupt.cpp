@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "child_process.h"
-#include "common/interrupt.h"
+#include "rt/files/interrupt.h"
 #include "test_helpers.h"
 
 namespace {

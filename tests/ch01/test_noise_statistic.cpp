@@ -2,8 +2,8 @@
 // render and catch a biased one. [golden statistic, all chapters]
 #include <catch2/catch.hpp>
 
-#include "common/rng.h"
 #include "noise_statistic.h"
+#include "rt/core/rng.h"
 
 namespace {
 

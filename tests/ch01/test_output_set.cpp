@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "child_process.h"
-#include "common/error.h"
-#include "common/output_set.h"
+#include "rt/core/error.h"
+#include "rt/files/output_set.h"
 #include "test_helpers.h"
 
 namespace {

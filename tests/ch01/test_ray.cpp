@@ -2,7 +2,7 @@
 // Chapter 01. (The instant a ray carries, and that continued() keeps it, is chapter 07's.)
 #include <catch2/catch.hpp>
 
-#include "common/ray.h"
+#include "rt/core/ray.h"
 #include "test_helpers.h"
 
 using rt::point3;

@@ -9,11 +9,11 @@
 #include <utility>
 #include <vector>
 
-#include "common/background.h"
-#include "common/camera.h"
-#include "common/estimator.h"
-#include "common/film.h"
-#include "common/render.h"
+#include "rt/camera/camera.h"
+#include "rt/integrators/estimator.h"
+#include "rt/render/film.h"
+#include "rt/render/render.h"
+#include "rt/scene/background.h"
 #include "test_helpers.h"
 
 namespace {

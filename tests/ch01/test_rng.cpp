@@ -6,8 +6,8 @@
 #include <utility>
 #include <vector>
 
-#include "common/rng.h"
-#include "common/sampler.h"
+#include "rt/core/rng.h"
+#include "rt/samplers/sampler.h"
 #include "statistics.h"
 
 using rt::pcg32;

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "common/rng.h"
+#include "rt/core/rng.h"
 #include "statistics.h"
 
 using rt_test::chi_square_p_value;

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <limits>
 
-#include "common/rng.h"
-#include "common/vec3.h"
+#include "rt/core/rng.h"
+#include "rt/core/vec3.h"
 #include "test_helpers.h"
 
 using rt::real;

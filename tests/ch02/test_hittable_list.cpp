@@ -3,8 +3,8 @@
 #include <catch2/catch.hpp>
 #include <memory>
 
-#include "common/hittable_list.h"
-#include "common/sphere.h"
+#include "rt/geometry/sphere.h"
+#include "rt/scene/hittable_list.h"
 
 namespace {
 

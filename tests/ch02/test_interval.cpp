@@ -1,7 +1,7 @@
 // interval (common/interval.h): closed [min, max] ranges of t and of color channels. Chapter 02.
 #include <catch2/catch.hpp>
 
-#include "common/interval.h"
+#include "rt/core/interval.h"
 
 using rt::infinity;
 using rt::interval;

@@ -7,12 +7,12 @@
 #include <memory>
 #include <string>
 
-#include "common/background.h"
-#include "common/error.h"
-#include "common/hittable_list.h"
-#include "common/scene.h"
-#include "common/show_normals.h"
-#include "common/sphere.h"
+#include "rt/core/error.h"
+#include "rt/geometry/sphere.h"
+#include "rt/integrators/show_normals.h"
+#include "rt/scene/background.h"
+#include "rt/scene/hittable_list.h"
+#include "rt/scene/scene.h"
 #include "test_helpers.h"
 
 namespace {

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "common/error.h"
-#include "common/rng.h"
-#include "common/sphere.h"
+#include "rt/core/error.h"
+#include "rt/core/rng.h"
+#include "rt/geometry/sphere.h"
 #include "test_helpers.h"
 
 namespace {

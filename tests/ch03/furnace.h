@@ -8,12 +8,12 @@
 #include <cmath>
 #include <memory>
 
-#include "common/background.h"
-#include "common/camera.h"
-#include "common/film.h"
-#include "common/hittable.h"
-#include "common/path_tracer.h"
-#include "common/sampler.h"
+#include "rt/camera/camera.h"
+#include "rt/geometry/hittable.h"
+#include "rt/integrators/path_tracer.h"
+#include "rt/render/film.h"
+#include "rt/samplers/sampler.h"
+#include "rt/scene/background.h"
 #include "statistics.h"
 
 namespace rt_test {

@@ -5,10 +5,10 @@
 
 #include <memory>
 
-#include "common/hittable.h"
-#include "common/lambertian.h"
-#include "common/material.h"
-#include "common/vec3.h"
+#include "rt/core/vec3.h"
+#include "rt/geometry/hittable.h"
+#include "rt/materials/lambertian.h"
+#include "rt/materials/material.h"
 
 namespace rt_test {
 

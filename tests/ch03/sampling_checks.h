@@ -14,9 +14,9 @@
 #include <limits>
 #include <vector>
 
-#include "common/rng.h"
-#include "common/sampler.h"
-#include "common/vec3.h"
+#include "rt/core/rng.h"
+#include "rt/core/vec3.h"
+#include "rt/samplers/sampler.h"
 #include "statistics.h"
 
 namespace rt_test::sampling_checks {

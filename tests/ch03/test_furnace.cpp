@@ -4,8 +4,8 @@
 #include <memory>
 
 #include "ch03/furnace.h"
-#include "common/lambertian.h"
-#include "common/sphere.h"
+#include "rt/geometry/sphere.h"
+#include "rt/materials/lambertian.h"
 
 using rt::color;
 

@@ -11,9 +11,9 @@
 #include <utility>
 
 #include "ch03/material_helpers.h"
-#include "common/error.h"
-#include "common/lambertian.h"
-#include "common/rng.h"
+#include "rt/core/error.h"
+#include "rt/core/rng.h"
+#include "rt/materials/lambertian.h"
 #include "statistics.h"
 #include "test_helpers.h"
 

@@ -5,9 +5,9 @@
 #include <limits>
 #include <vector>
 
-#include "common/onb.h"
-#include "common/rng.h"
-#include "common/sampling.h"
+#include "rt/core/onb.h"
+#include "rt/core/rng.h"
+#include "rt/samplers/sampling.h"
 
 using rt::real;
 using rt::vec3;

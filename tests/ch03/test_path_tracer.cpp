@@ -15,15 +15,15 @@
 #include <string>
 
 #include "ch03/material_helpers.h"
-#include "common/camera.h"
-#include "common/error.h"
-#include "common/film.h"
-#include "common/hittable_list.h"
-#include "common/lambertian.h"
-#include "common/path_tracer.h"
-#include "common/quad.h"
-#include "common/scene.h"
-#include "common/sphere.h"
+#include "rt/camera/camera.h"
+#include "rt/core/error.h"
+#include "rt/geometry/quad.h"
+#include "rt/geometry/sphere.h"
+#include "rt/integrators/path_tracer.h"
+#include "rt/materials/lambertian.h"
+#include "rt/render/film.h"
+#include "rt/scene/hittable_list.h"
+#include "rt/scene/scene.h"
 #include "test_helpers.h"
 
 namespace {

@@ -9,8 +9,8 @@
 #include <utility>
 
 #include "ch03/material_helpers.h"
-#include "common/error.h"
-#include "common/quad.h"
+#include "rt/core/error.h"
+#include "rt/geometry/quad.h"
 #include "test_helpers.h"
 
 namespace {

@@ -19,9 +19,9 @@
 #include <string>
 
 #include "ch03/material_helpers.h"
-#include "common/quad.h"
-#include "common/rng.h"
-#include "common/sphere.h"
+#include "rt/core/rng.h"
+#include "rt/geometry/quad.h"
+#include "rt/geometry/sphere.h"
 #include "test_helpers.h"
 
 namespace {

@@ -4,8 +4,8 @@
 #include <memory>
 
 #include "ch03/material_helpers.h"
-#include "common/error.h"
-#include "common/sphere.h"
+#include "rt/core/error.h"
+#include "rt/geometry/sphere.h"
 
 using rt::point3, rt::vec3;
 

@@ -4,8 +4,8 @@
 #include <memory>
 
 #include "ch03/furnace.h"
-#include "common/metal.h"
-#include "common/sphere.h"
+#include "rt/geometry/sphere.h"
+#include "rt/materials/metal.h"
 
 using rt::color;
 

@@ -3,7 +3,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "common/optics.h"
+#include "rt/materials/optics.h"
 
 using rt::real, rt::vec3;
 

@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "ch03/sampling_checks.h"
-#include "common/rng.h"
-#include "common/sampling.h"
+#include "rt/core/rng.h"
+#include "rt/samplers/sampling.h"
 
 using namespace rt_test::sampling_checks;
 

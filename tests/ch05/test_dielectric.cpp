@@ -7,10 +7,10 @@
 #include <limits>
 #include <memory>
 
-#include "common/dielectric.h"
-#include "common/error.h"
-#include "common/optics.h"
-#include "common/sphere.h"
+#include "rt/core/error.h"
+#include "rt/geometry/sphere.h"
+#include "rt/materials/dielectric.h"
+#include "rt/materials/optics.h"
 #include "test_helpers.h"
 
 using rt::color, rt::point3, rt::real, rt::vec3;

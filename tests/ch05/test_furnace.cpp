@@ -5,9 +5,9 @@
 #include <memory>
 
 #include "ch03/furnace.h"
-#include "common/dielectric.h"
-#include "common/hittable_list.h"
-#include "common/sphere.h"
+#include "rt/geometry/sphere.h"
+#include "rt/materials/dielectric.h"
+#include "rt/scene/hittable_list.h"
 
 namespace {
 

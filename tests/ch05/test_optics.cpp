@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include "common/optics.h"
+#include "rt/materials/optics.h"
 
 using rt::real, rt::vec3;
 

@@ -10,11 +10,11 @@
 #include <string>
 
 #include "ch01/camera_helpers.h"
-#include "common/camera.h"
-#include "common/error.h"
-#include "common/film.h"
-#include "common/sampling.h"
-#include "common/thin_lens_camera.h"
+#include "rt/camera/camera.h"
+#include "rt/camera/thin_lens_camera.h"
+#include "rt/core/error.h"
+#include "rt/render/film.h"
+#include "rt/samplers/sampling.h"
 #include "test_helpers.h"
 
 using Catch::Matchers::Contains;

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <limits>
 
-#include "common/aabb.h"
-#include "common/rng.h"
+#include "rt/accel/aabb.h"
+#include "rt/core/rng.h"
 #include "test_helpers.h"
 
 namespace {

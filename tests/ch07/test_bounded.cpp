@@ -10,12 +10,12 @@
 #include <vector>
 
 #include "ch03/material_helpers.h"
-#include "common/bounded.h"
-#include "common/bvh.h"
-#include "common/error.h"
-#include "common/moving_sphere.h"
-#include "common/quad.h"
-#include "common/sphere.h"
+#include "rt/accel/bounded.h"
+#include "rt/accel/bvh.h"
+#include "rt/core/error.h"
+#include "rt/geometry/moving_sphere.h"
+#include "rt/geometry/quad.h"
+#include "rt/geometry/sphere.h"
 
 namespace {
 

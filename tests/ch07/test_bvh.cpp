@@ -13,13 +13,13 @@
 #include <string>
 #include <vector>
 
-#include "common/bvh.h"
-#include "common/hittable_list.h"
-#include "common/lambertian.h"
-#include "common/moving_sphere.h"
-#include "common/quad.h"
-#include "common/rng.h"
-#include "common/sphere.h"
+#include "rt/accel/bvh.h"
+#include "rt/core/rng.h"
+#include "rt/geometry/moving_sphere.h"
+#include "rt/geometry/quad.h"
+#include "rt/geometry/sphere.h"
+#include "rt/materials/lambertian.h"
+#include "rt/scene/hittable_list.h"
 #include "test_helpers.h"
 
 namespace {

@@ -8,12 +8,12 @@
 #include <vector>
 
 #include "ch03/material_helpers.h"
-#include "common/bvh.h"
-#include "common/hittable_list.h"
-#include "common/moving_sphere.h"
-#include "common/quad.h"
-#include "common/rng.h"
-#include "common/sphere.h"
+#include "rt/accel/bvh.h"
+#include "rt/core/rng.h"
+#include "rt/geometry/moving_sphere.h"
+#include "rt/geometry/quad.h"
+#include "rt/geometry/sphere.h"
+#include "rt/scene/hittable_list.h"
 #include "test_helpers.h"
 
 namespace {

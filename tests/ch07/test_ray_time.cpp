@@ -3,10 +3,10 @@
 #include <catch2/catch.hpp>
 
 #include "ch03/material_helpers.h"
-#include "common/lambertian.h"
-#include "common/ray.h"
-#include "common/sampler.h"
-#include "common/thin_lens_camera.h"
+#include "rt/camera/thin_lens_camera.h"
+#include "rt/core/ray.h"
+#include "rt/materials/lambertian.h"
+#include "rt/samplers/sampler.h"
 #include "test_helpers.h"
 
 TEST_CASE("ray: the instant defaults to 0 and continued() carries it", "[ray][ch07]") {

@@ -11,9 +11,9 @@
 #include <string>
 
 #include "ch01/camera_helpers.h"
-#include "common/error.h"
-#include "common/film.h"
-#include "common/thin_lens_camera.h"
+#include "rt/camera/thin_lens_camera.h"
+#include "rt/core/error.h"
+#include "rt/render/film.h"
 #include "test_helpers.h"
 
 using rt_test::book_film;

@@ -17,9 +17,9 @@
 #include <string>
 #include <vector>
 
-#include "common/display_encoding.h"
-#include "common/error.h"
-#include "common/image_texture.h"
+#include "rt/core/error.h"
+#include "rt/image/display_encoding.h"
+#include "rt/textures/image_texture.h"
 #include "test_helpers.h"
 
 namespace {

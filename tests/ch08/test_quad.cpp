@@ -8,7 +8,7 @@
 #include <utility>
 
 #include "ch03/material_helpers.h"
-#include "common/quad.h"
+#include "rt/geometry/quad.h"
 #include "test_helpers.h"
 
 namespace {

@@ -11,8 +11,8 @@
 #include <sstream>
 #include <string>
 
-#include "common/error.h"
-#include "common/texture.h"
+#include "rt/core/error.h"
+#include "rt/textures/texture.h"
 #include "test_helpers.h"
 
 namespace {

@@ -9,9 +9,9 @@
 #include <memory>
 
 #include "ch03/material_helpers.h"
-#include "common/moving_sphere.h"
-#include "common/rng.h"
-#include "common/sphere.h"
+#include "rt/core/rng.h"
+#include "rt/geometry/moving_sphere.h"
+#include "rt/geometry/sphere.h"
 #include "test_helpers.h"
 
 namespace {

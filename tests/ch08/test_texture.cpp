@@ -12,9 +12,9 @@
 #include <string>
 
 #include "ch03/material_helpers.h"
-#include "common/error.h"
-#include "common/sphere.h"
-#include "common/texture.h"
+#include "rt/core/error.h"
+#include "rt/geometry/sphere.h"
+#include "rt/textures/texture.h"
 #include "test_helpers.h"
 
 namespace {

@@ -8,12 +8,12 @@
 #include <utility>
 
 #include "ch03/material_helpers.h"
-#include "common/error.h"
-#include "common/lambertian.h"
-#include "common/quad.h"
-#include "common/rng.h"
-#include "common/texture.h"
-#include "common/textured_lambertian.h"
+#include "rt/core/error.h"
+#include "rt/core/rng.h"
+#include "rt/geometry/quad.h"
+#include "rt/materials/lambertian.h"
+#include "rt/materials/textured_lambertian.h"
+#include "rt/textures/texture.h"
 #include "test_helpers.h"
 
 namespace {

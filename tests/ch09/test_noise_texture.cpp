@@ -3,8 +3,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "common/noise_texture.h"
-#include "common/rng.h"
+#include "rt/core/rng.h"
+#include "rt/textures/noise_texture.h"
 #include "test_helpers.h"
 
 namespace {

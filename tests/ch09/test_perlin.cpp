@@ -23,8 +23,8 @@
 #include <cmath>
 #include <limits>
 
-#include "common/perlin.h"
-#include "common/rng.h"
+#include "rt/core/rng.h"
+#include "rt/textures/perlin.h"
 #include "test_helpers.h"
 
 namespace {

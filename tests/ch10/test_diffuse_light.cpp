@@ -11,16 +11,16 @@
 #include <string>
 #include <utility>
 
-#include "common/diffuse_light.h"
-#include "common/error.h"
-#include "common/film.h"
-#include "common/hittable_list.h"
-#include "common/metal.h"
-#include "common/path_tracer.h"
-#include "common/quad.h"
-#include "common/scene.h"
-#include "common/texture.h"
-#include "common/thin_lens_camera.h"
+#include "rt/camera/thin_lens_camera.h"
+#include "rt/core/error.h"
+#include "rt/geometry/quad.h"
+#include "rt/integrators/path_tracer.h"
+#include "rt/materials/diffuse_light.h"
+#include "rt/materials/metal.h"
+#include "rt/render/film.h"
+#include "rt/scene/hittable_list.h"
+#include "rt/scene/scene.h"
+#include "rt/textures/texture.h"
 #include "test_helpers.h"
 
 namespace {

@@ -11,10 +11,10 @@
 #include <vector>
 
 #include "ch03/material_helpers.h"
-#include "common/box.h"
-#include "common/error.h"
-#include "common/hittable_list.h"
-#include "common/rng.h"
+#include "rt/core/error.h"
+#include "rt/core/rng.h"
+#include "rt/geometry/box.h"
+#include "rt/scene/hittable_list.h"
 #include "test_helpers.h"
 
 namespace {

@@ -7,8 +7,8 @@
 #include <catch2/catch.hpp>
 
 #include "ch11_instances/cornell_box.h"
-#include "common/path_tracer.h"
 #include "noise_statistic.h"
+#include "rt/integrators/path_tracer.h"
 
 namespace {
 

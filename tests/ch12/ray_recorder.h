@@ -5,7 +5,7 @@
 #include <memory>
 #include <vector>
 
-#include "common/bounded.h"
+#include "rt/accel/bounded.h"
 
 namespace rt_test {
 

@@ -11,9 +11,9 @@
 #include <string>
 
 #include "ch03/material_helpers.h"
-#include "common/box.h"
-#include "common/instance.h"
-#include "common/sphere.h"
+#include "rt/geometry/box.h"
+#include "rt/geometry/instance.h"
+#include "rt/geometry/sphere.h"
 #include "test_helpers.h"
 
 namespace {

@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "ch03/material_helpers.h"
-#include "common/box.h"
-#include "common/constant_medium.h"
-#include "common/instance.h"
-#include "common/rng.h"
+#include "rt/core/rng.h"
+#include "rt/geometry/box.h"
+#include "rt/geometry/instance.h"
+#include "rt/media/constant_medium.h"
 #include "test_helpers.h"
 
 namespace {

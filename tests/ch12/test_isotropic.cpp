@@ -8,10 +8,10 @@
 #include <memory>
 #include <vector>
 
-#include "common/error.h"
-#include "common/isotropic.h"
-#include "common/rng.h"
-#include "common/sampling.h"
+#include "rt/core/error.h"
+#include "rt/core/rng.h"
+#include "rt/media/isotropic.h"
+#include "rt/samplers/sampling.h"
 #include "statistics.h"
 #include "test_helpers.h"
 

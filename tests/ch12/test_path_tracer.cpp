@@ -8,12 +8,12 @@
 
 #include "ch03/material_helpers.h"
 #include "ch12/ray_recorder.h"
-#include "common/box.h"
-#include "common/constant_medium.h"
-#include "common/hittable_list.h"
-#include "common/lambertian.h"
-#include "common/path_tracer.h"
-#include "common/quad.h"
+#include "rt/geometry/box.h"
+#include "rt/geometry/quad.h"
+#include "rt/integrators/path_tracer.h"
+#include "rt/materials/lambertian.h"
+#include "rt/media/constant_medium.h"
+#include "rt/scene/hittable_list.h"
 #include "test_helpers.h"
 
 namespace {

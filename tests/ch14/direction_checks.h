@@ -28,8 +28,8 @@
 #include <vector>
 
 #include "ch03/sampling_checks.h"
-#include "common/rng.h"
-#include "common/vec3.h"
+#include "rt/core/rng.h"
+#include "rt/core/vec3.h"
 #include "statistics.h"
 
 namespace rt_test::direction_checks {

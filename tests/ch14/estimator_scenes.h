@@ -28,17 +28,17 @@
 #include <string>
 #include <vector>
 
-#include "common/background.h"
-#include "common/box.h"
-#include "common/constant_medium.h"
-#include "common/dielectric.h"
-#include "common/diffuse_light.h"
-#include "common/estimator.h"
-#include "common/hittable_list.h"
-#include "common/lambertian.h"
-#include "common/metal.h"
-#include "common/quad.h"
-#include "common/sphere.h"
+#include "rt/geometry/box.h"
+#include "rt/geometry/quad.h"
+#include "rt/geometry/sphere.h"
+#include "rt/integrators/estimator.h"
+#include "rt/materials/dielectric.h"
+#include "rt/materials/diffuse_light.h"
+#include "rt/materials/lambertian.h"
+#include "rt/materials/metal.h"
+#include "rt/media/constant_medium.h"
+#include "rt/scene/background.h"
+#include "rt/scene/hittable_list.h"
 #include "statistics.h"
 #include "test_helpers.h"
 

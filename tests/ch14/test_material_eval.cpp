@@ -14,13 +14,13 @@
 
 #include "ch03/material_helpers.h"
 #include "ch14/direction_checks.h"
-#include "common/dielectric.h"
-#include "common/diffuse_light.h"
-#include "common/isotropic.h"
-#include "common/lambertian.h"
-#include "common/metal.h"
-#include "common/texture.h"
-#include "common/textured_lambertian.h"
+#include "rt/materials/dielectric.h"
+#include "rt/materials/diffuse_light.h"
+#include "rt/materials/lambertian.h"
+#include "rt/materials/metal.h"
+#include "rt/materials/textured_lambertian.h"
+#include "rt/media/isotropic.h"
+#include "rt/textures/texture.h"
 #include "test_helpers.h"
 
 namespace {

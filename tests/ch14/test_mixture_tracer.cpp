@@ -7,8 +7,8 @@
 #include <catch2/catch.hpp>
 
 #include "ch14/estimator_scenes.h"
-#include "common/mixture_tracer.h"
-#include "common/path_tracer.h"
+#include "rt/integrators/mixture_tracer.h"
+#include "rt/integrators/path_tracer.h"
 
 namespace {
 

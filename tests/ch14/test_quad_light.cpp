@@ -12,9 +12,9 @@
 
 #include "ch03/sampling_checks.h"
 #include "ch14/direction_checks.h"
-#include "common/diffuse_light.h"
-#include "common/quad.h"
-#include "common/quad_light.h"
+#include "rt/geometry/quad.h"
+#include "rt/lights/quad_light.h"
+#include "rt/materials/diffuse_light.h"
 #include "test_helpers.h"
 
 namespace {

@@ -9,14 +9,14 @@
 #include <vector>
 
 #include "ch14_importance_sampling/scene_catalog.h"
-#include "common/bvh.h"
-#include "common/error.h"
-#include "common/film.h"
-#include "common/hittable_list.h"
-#include "common/image.h"
-#include "common/image_io.h"
-#include "common/interval.h"
-#include "common/sampler.h"
+#include "rt/accel/bvh.h"
+#include "rt/core/error.h"
+#include "rt/core/interval.h"
+#include "rt/image/image.h"
+#include "rt/image/image_io.h"
+#include "rt/render/film.h"
+#include "rt/samplers/sampler.h"
+#include "rt/scene/hittable_list.h"
 #include "test_helpers.h"
 
 namespace {

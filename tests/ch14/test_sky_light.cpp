@@ -13,8 +13,8 @@
 
 #include "ch03/sampling_checks.h"
 #include "ch14/direction_checks.h"
-#include "common/background.h"
-#include "common/sky_light.h"
+#include "rt/lights/sky_light.h"
+#include "rt/scene/background.h"
 #include "test_helpers.h"
 
 namespace {

@@ -13,9 +13,9 @@
 
 #include "ch03/sampling_checks.h"
 #include "ch14/direction_checks.h"
-#include "common/diffuse_light.h"
-#include "common/sphere.h"
-#include "common/sphere_light.h"
+#include "rt/geometry/sphere.h"
+#include "rt/lights/sphere_light.h"
+#include "rt/materials/diffuse_light.h"
 #include "test_helpers.h"
 
 namespace {

@@ -11,13 +11,13 @@
 #include <vector>
 
 #include "ch03/material_helpers.h"
-#include "common/box.h"
-#include "common/bvh.h"
-#include "common/constant_medium.h"
-#include "common/hittable_list.h"
-#include "common/instance.h"
-#include "common/quad.h"
-#include "common/sphere.h"
+#include "rt/accel/bvh.h"
+#include "rt/geometry/box.h"
+#include "rt/geometry/instance.h"
+#include "rt/geometry/quad.h"
+#include "rt/geometry/sphere.h"
+#include "rt/media/constant_medium.h"
+#include "rt/scene/hittable_list.h"
 #include "statistics.h"
 #include "test_helpers.h"
 

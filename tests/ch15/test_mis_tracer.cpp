@@ -10,9 +10,9 @@
 #include <memory>
 
 #include "ch14/estimator_scenes.h"
-#include "common/mis_tracer.h"
-#include "common/mixture_tracer.h"
-#include "common/path_tracer.h"
+#include "rt/integrators/mis_tracer.h"
+#include "rt/integrators/mixture_tracer.h"
+#include "rt/integrators/path_tracer.h"
 
 namespace {
 

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <limits>
 
-#include "common/mis_tracer.h"
-#include "common/rng.h"
+#include "rt/core/rng.h"
+#include "rt/integrators/mis_tracer.h"
 #include "test_helpers.h"
 
 namespace {

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "common/sampler.h"
-#include "common/sobol_sampler.h"
+#include "rt/samplers/sampler.h"
+#include "rt/samplers/sobol_sampler.h"
 #include "statistics.h"
 
 namespace {

@@ -5,8 +5,8 @@
 #include <exception>
 #include <string>
 
-#include "common/image_io.h"
 #include "noise_statistic.h"
+#include "rt/image/image_io.h"
 
 int main(int argc, char** argv) {
     if (argc != 7) {

@@ -10,13 +10,13 @@ trap 'rm -rf "$work"' EXIT
 failures=0
 
 # The clean fixture: ch01 owns base.h/.cpp, ch02 owns extra.h and adds two lines to base.h.
-# Its traps: a package header, a test tag and a URL in strings, "extra.h" reached through the
-# common/ include folder, and an image.
+# Its traps: a package header, a test tag and a URL in strings, "base.h" reached from its own
+# folder, and an image.
 make_fixture() {
     local repo=$1
-    mkdir -p "$repo"/{common,chapters/ch01_first,chapters/ch02_second,tests/ch01,tests/ch02,tests/cli}
-    printf '# fixture\nch01  base.h base.cpp\nch02  extra.h\n' >"$repo/common/layers.txt"
-    cat >"$repo/common/base.h" <<'EOF'
+    mkdir -p "$repo"/{rt,chapters/ch01_first,chapters/ch02_second,tests/ch01,tests/ch02,tests/cli}
+    printf '# fixture\nch01  base.h base.cpp\nch02  extra.h\n' >"$repo/rt/layers.txt"
+    cat >"$repo/rt/base.h" <<'EOF'
 // The first idea. Chapter 01.
 #pragma once
 #include <vector>
@@ -31,16 +31,16 @@ struct base {
     int last = 3;
 };
 EOF
-    printf '#include "base.h"\nint base_value() { return base{}.value; }\n' >"$repo/common/base.cpp"
-    printf '#pragma once\n#include "base.h"\n#include "common/base.h"\nstruct extra { int width = 3; };\n' \
-        >"$repo/common/extra.h"
-    printf '#include "common/base.h"\nint main() { return 0; }\n' >"$repo/chapters/ch01_first/main.cpp"
-    printf '#pragma once\n#include "extra.h"\n' >"$repo/chapters/ch02_second/scene.h"
-    printf '#include "common/extra.h"\n#include "scene.h"\nint main() { return 0; }\n' \
+    printf '#include "base.h"\nint base_value() { return base{}.value; }\n' >"$repo/rt/base.cpp"
+    printf '#pragma once\n#include "base.h"\n#include "rt/base.h"\nstruct extra { int width = 3; };\n' \
+        >"$repo/rt/extra.h"
+    printf '#include "rt/base.h"\nint main() { return 0; }\n' >"$repo/chapters/ch01_first/main.cpp"
+    printf '#pragma once\n#include "rt/extra.h"\n' >"$repo/chapters/ch02_second/scene.h"
+    printf '#include "rt/extra.h"\n#include "scene.h"\nint main() { return 0; }\n' \
         >"$repo/chapters/ch02_second/main.cpp"
-    printf '#pragma once\n#include "common/base.h"\n' >"$repo/tests/test_helpers.h"
+    printf '#pragma once\n#include "rt/base.h"\n' >"$repo/tests/test_helpers.h"
     printf '#include "test_helpers.h"\nTEST_CASE("base", "[ch02]") {}\n' >"$repo/tests/ch01/test_base.cpp"
-    printf '#include "test_helpers.h"\n#include "extra.h"\n' >"$repo/tests/ch02/test_extra.cpp"
+    printf '#include "test_helpers.h"\n#include "rt/extra.h"\n' >"$repo/tests/ch02/test_extra.cpp"
     printf '\x89PNG\r\n\x1a\n\0\0' >"$repo/tests/cli/picture.png"
 }
 
@@ -79,65 +79,65 @@ case_check_passes_clean_fixture() {
     else echo "ok $case: $out"; fi
 }
 case_check_catches_early_includes_later() {
-    echo '#include "extra.h"' >>"$repo/common/base.h"
-    breach "ch01 header includes a ch02 header" 1 "common/base.h:14 (ch01)" "common/extra.h (ch02)"
+    echo '#include "extra.h"' >>"$repo/rt/base.h"
+    breach "ch01 header includes a ch02 header" 1 "rt/base.h:14 (ch01)" "rt/extra.h (ch02)"
 }
 case_check_catches_chapter_main_includes_later() {
-    echo '#include "common/extra.h"' >>"$repo/chapters/ch01_first/main.cpp"
-    breach "ch01 main includes a ch02 header" 1 "chapters/ch01_first/main.cpp:3" "common/extra.h (ch02)"
+    echo '#include "rt/extra.h"' >>"$repo/chapters/ch01_first/main.cpp"
+    breach "ch01 main includes a ch02 header" 1 "chapters/ch01_first/main.cpp:3" "rt/extra.h (ch02)"
 }
 case_check_catches_test_includes_later() {
-    echo '#include "extra.h"' >>"$repo/tests/test_helpers.h"
-    breach "shared test helper includes a ch02 header" 1 "tests/test_helpers.h:3 (ch01)" "common/extra.h"
+    echo '#include "rt/extra.h"' >>"$repo/tests/test_helpers.h"
+    breach "shared test helper includes a ch02 header" 1 "tests/test_helpers.h:3 (ch01)" "rt/extra.h"
 }
 case_check_catches_marked_include() {
-    echo '#include "extra.h"  // [ch02] only chapter 02 uses it' >>"$repo/common/base.cpp"
-    breach "marked include still counts" 1 "common/base.cpp:3" "common/extra.h (ch02)" "marked [ch02]"
+    echo '#include "extra.h"  // [ch02] only chapter 02 uses it' >>"$repo/rt/base.cpp"
+    breach "marked include still counts" 1 "rt/base.cpp:3" "rt/extra.h (ch02)" "marked [ch02]"
 }
 case_check_catches_marker_not_later() {
-    echo 'int depth = 0;  // [ch02] same chapter as the file' >>"$repo/common/extra.h"
-    breach "marker of the file's own chapter" 1 "common/extra.h:5" "[ch02]" "not later"
+    echo 'int depth = 0;  // [ch02] same chapter as the file' >>"$repo/rt/extra.h"
+    breach "marker of the file's own chapter" 1 "rt/extra.h:5" "[ch02]" "not later"
     make_fixture "$repo.2" && repo=$repo.2
-    echo 'int depth = 0;  // [ch01] earlier than the file' >>"$repo/common/extra.h"
-    breach "marker of an earlier chapter" 1 "common/extra.h:5" "[ch01]" "not later"
+    echo 'int depth = 0;  // [ch01] earlier than the file' >>"$repo/rt/extra.h"
+    breach "marker of an earlier chapter" 1 "rt/extra.h:5" "[ch01]" "not later"
 }
 case_check_catches_unbalanced_markers() {
-    echo '// [ch02 begin] never closed' >>"$repo/common/base.h"
-    breach "begin without end" 1 "common/base.h:14" "[ch02 begin] has no end"
+    echo '// [ch02 begin] never closed' >>"$repo/rt/base.h"
+    breach "begin without end" 1 "rt/base.h:14" "[ch02 begin] has no end"
     make_fixture "$repo.2" && repo=$repo.2
-    echo '// [ch02 end]' >>"$repo/common/base.cpp"
-    breach "end without begin" 1 "common/base.cpp:3" "[ch02 end] has no begin"
+    echo '// [ch02 end]' >>"$repo/rt/base.cpp"
+    breach "end without begin" 1 "rt/base.cpp:3" "[ch02 end] has no begin"
     make_fixture "$repo.3" && repo=$repo.3
-    sed -i 's|// \[ch02 begin\]|&\n// [ch02 begin]|' "$repo/common/base.h"
-    breach "nested begin" 1 "common/base.h:10" "do not nest"
+    sed -i 's|// \[ch02 begin\]|&\n// [ch02 begin]|' "$repo/rt/base.h"
+    breach "nested begin" 1 "rt/base.h:10" "do not nest"
 }
-case_check_catches_unlisted_common_file() {
-    echo '#pragma once' >"$repo/common/stray.h"
-    breach "common file missing from layers.txt" 1 "common/stray.h is not listed"
-    echo '#include "common/stray.h"' >>"$repo/chapters/ch02_second/main.cpp"
-    breach "include of an unlisted common file" 2 "chapters/ch02_second/main.cpp:4" \
-        "common/stray.h, which is not listed"
+case_check_catches_unlisted_library_file() {
+    echo '#pragma once' >"$repo/rt/stray.h"
+    breach "library file missing from layers.txt" 1 "rt/stray.h is not listed"
+    echo '#include "rt/stray.h"' >>"$repo/chapters/ch02_second/main.cpp"
+    breach "include of an unlisted library file" 2 "chapters/ch02_second/main.cpp:4" \
+        "rt/stray.h, which is not listed"
     make_fixture "$repo.2" && repo=$repo.2
-    echo 'ch02  base.cpp ghost.h' >>"$repo/common/layers.txt"
+    echo 'ch02  base.cpp ghost.h' >>"$repo/rt/layers.txt"
     breach "file listed twice" 2 "base.cpp is listed twice"
-    breach "listed file that does not exist" 2 "common/ghost.h is listed" "does not exist"
+    breach "listed file that does not exist" 2 "rt/ghost.h is listed" "does not exist"
 }
 case_chapter_diff_shows_new_file() {
     run chapter-diff ch02 --root "$repo"
-    has "--- /dev/null" && has "+++ b/common/extra.h" && has "+struct extra { int width = 3; };"
+    has "--- /dev/null" && has "+++ b/rt/extra.h" && has "+struct extra { int width = 3; };"
     has "+++ b/chapters/ch02_second/main.cpp" && has "+++ b/tests/ch02/test_extra.cpp"
     has "chapter-diff ch02: 4 new files (11 lines), 1 earlier file changed (+4 lines)"
 }
 case_chapter_diff_shows_marked_lines() {
     run chapter-diff ch02 --root "$repo"
-    has "--- a/common/base.h" && has "+++ b/common/base.h" && has "     int value = 1;"
+    has "--- a/rt/base.h" && has "+++ b/rt/base.h" && has "     int value = 1;"
     has "+    int shutter = 0;  // [ch02] the instant a ray leaves"
     has "+    // [ch02 begin]" && has "+    int hook() const { return 2; }" && has "+    // [ch02 end]"
     grep -q $'\033' <<<"$out" && fail "colour codes in piped output" || echo "ok $case: no colour when piped"
 }
 case_chapter_diff_hides_later_lines() {
     run chapter-diff ch01 --root "$repo"
-    has "+++ b/common/base.h" && has "+    int value = 1;" && has "+    int last = 3;"
+    has "+++ b/rt/base.h" && has "+    int value = 1;" && has "+    int last = 3;"
     lacks "shutter" && lacks "hook" && lacks "extra"
     has "Binary file b/tests/cli/picture.png is new" && lacks "PNG"
 }

@@ -19,11 +19,11 @@
 #include <tuple>
 #include <vector>
 
-#include "common/error.h"
-#include "common/image.h"
-#include "common/image_io.h"
-#include "common/output_set.h"
-#include "common/render.h"
+#include "rt/core/error.h"
+#include "rt/files/output_set.h"
+#include "rt/image/image.h"
+#include "rt/image/image_io.h"
+#include "rt/render/render.h"
 
 namespace {
 

@@ -1,0 +1,120 @@
+#include "rt/integrators/mis_tracer.h"
+
+#include <cmath>
+
+#include "rt/core/validate.h"
+#include "rt/materials/material.h"
+#include "rt/render/ray_count.h"
+
+namespace rt {
+
+namespace {
+std::shared_ptr<const hittable> given(std::shared_ptr<const hittable> world) {
+    require_given(world, "scene world");
+    return world;
+}
+
+// Russian roulette starts after this many segments: the first bounces carry most of the light.
+constexpr int roulette_after = 3;
+}  // namespace
+
+real power_heuristic(real pdf_taken, real pdf_other) {
+    if (!(pdf_taken > 0)) return 0;
+    if (std::isinf(pdf_taken)) return std::isinf(pdf_other) ? real(0.5) : 1;
+    // 1 / (1 + (other / taken)^2): no overflow when both densities are huge.
+    real ratio = pdf_other / pdf_taken;
+    return 1 / (1 + ratio * ratio);
+}
+
+mis_tracer::mis_tracer(std::shared_ptr<const hittable> w, const background& b)
+    : world(given(std::move(w))), sky(b), lights(*world, b) {}
+
+real mis_tracer::visibility(const ray& r_in, const hit_record& rec,
+                            const light_sample& towards) const {
+    ray shadow = rec.spawn_ray(r_in, towards.wi);
+    if (towards.at_infinity) return world->transmittance(shadow, interval(0, infinity));
+    // End just short of the light: its point moved off its surface, towards us, by its own
+    // error bound, so the light itself never blocks the ray that reaches it.
+    const hit_record& on = towards.on_light;
+    point3 target        = on.p + on.p_error * on.normal;
+    return world->transmittance(shadow.continued(shadow.origin(), target - shadow.origin()),
+                                interval(0, 1));
+}
+
+color mis_tracer::radiance(const ray& camera_ray, sampler& s, int max_depth) const {
+    ray r = camera_ray;
+    color radiance(0, 0, 0);
+    color throughput(1, 1, 1);
+    // Whether light the next segment finds was also aimed at from the last vertex, and with
+    // what density the material chose that segment's direction.
+    bool weigh_emission = false;
+    real material_pdf   = 0;
+    point3 last_vertex;
+    for (int segment = 0; segment < max_depth; ++segment) {
+        hit_record rec;
+        count_ray();
+        if (!world->hit(r, interval(0, infinity), rec)) {
+            real w = 1;
+            if (weigh_emission)
+                w = power_heuristic(material_pdf,
+                                    lights.pdf_of_sky(last_vertex, unit_vector(r.direction())));
+            radiance += throughput * w * sky.radiance(r.direction());
+            break;
+        }
+        const material& surface = *rec.mat;
+        color emitted           = surface.emitted(r, rec);
+        if (!is_black(emitted)) {
+            real w = 1;
+            if (weigh_emission)
+                w = power_heuristic(
+                    material_pdf, lights.pdf_of_hit(last_vertex, unit_vector(r.direction()), rec));
+            radiance += throughput * w * emitted;
+        }
+
+        s.start_segment(segment);  // [ch16]
+        const bool evaluable = surface.evaluable() && !lights.empty();
+        // Next-event estimation: only where the light it finds is still within max_depth.
+        if (evaluable && segment + 1 < max_depth) {
+            real pick = s.next_1d();
+            light_sample towards;
+            if (lights.sample(rec.p, pick, s.next_2d(), towards)) {
+                color f = surface.eval(r, rec, towards.wi);
+                if (!is_black(f) && !is_black(towards.radiance)) {
+                    count_ray();
+                    real passed = visibility(r, rec, towards);
+                    if (passed > 0) {
+                        real w = power_heuristic(towards.pdf, surface.pdf(r, rec, towards.wi));
+                        radiance += throughput * f * towards.radiance * (passed * w / towards.pdf);
+                    }
+                }
+            }
+        }
+
+        color attenuation;
+        ray scattered;
+        if (!surface.scatter(r, rec, s, attenuation, scattered)) break;
+        weigh_emission = evaluable;
+        if (evaluable) material_pdf = surface.pdf(r, rec, unit_vector(scattered.direction()));
+        // Where the scattered ray really starts (off the surface): light_set::pdf_of_hit asks
+        // the light's shape again along this same ray, and must find the same point.
+        last_vertex = scattered.origin();
+        throughput  = throughput * attenuation;
+        r           = scattered;
+
+        if (segment + 1 >= roulette_after) {
+            real carried = max_abs_component(throughput);
+            if (carried < 1) {
+                real q = 1 - carried;
+                if (s.next_1d() < q) break;
+                throughput = throughput / (1 - q);
+            }
+        }
+    }
+    return radiance;
+}
+
+render_job mis_trace(const scene& sc) {
+    return {sc.cam, std::make_shared<mis_tracer>(sc.world, sc.sky), sc.settings};
+}
+
+}  // namespace rt

@@ -1,0 +1,43 @@
+// Next-event estimation with multiple importance sampling: at each surface that can be evaluated
+// the path both aims a shadow ray at a light (light_set) and scatters as the material chooses,
+// and light reached either way counts with the power heuristic's weight (Veach 1997, as in
+// pbrt-v4's path integrator):
+//   w_light = p_light^2 / (p_light^2 + p_material^2),   w_material = 1 - w_light for that path,
+// so a small bright light is found by the shadow ray and a glossy reflection of a big one by the
+// scattered ray, and neither is counted twice. Shadow rays take the exact transmittance of the
+// media they cross (hittable::transmittance). After the third segment a path that carries
+// little is ended with probability q = 1 - max(throughput) and otherwise divided by 1 - q
+// (Russian roulette): fewer, equally unbiased paths. Chapter 15.
+#pragma once
+
+#include "rt/integrators/path_tracer.h"
+#include "rt/lights/light_set.h"
+
+namespace rt {
+
+// The power heuristic's weight of a sample drawn with density pdf_taken, when the other
+// strategy would have drawn it with density pdf_other. Safe for 0 and infinite densities.
+real power_heuristic(real pdf_taken, real pdf_other);
+
+class mis_tracer : public radiance_estimator {
+  public:
+    mis_tracer(std::shared_ptr<const hittable> world, const background& sky);
+
+    // Per path segment at an evaluable material: 3 dimensions for the light sample, then the
+    // material's own; from the third segment on, 1 for Russian roulette.
+    color radiance(const ray& r, sampler& s, int max_depth) const override;
+    std::string_view name() const override { return "mis"; }
+
+  private:
+    // The fraction of the light sample's radiance that reaches rec unblocked.
+    real visibility(const ray& r_in, const hit_record& rec, const light_sample& towards) const;
+
+    std::shared_ptr<const hittable> world;
+    background sky;
+    light_set lights;
+};
+
+// The scene's job, with next-event estimation and MIS.
+render_job mis_trace(const scene& sc);
+
+}  // namespace rt

@@ -1,0 +1,41 @@
+#include "rt/integrators/path_tracer.h"
+
+#include "rt/core/validate.h"
+#include "rt/materials/material.h"
+#include "rt/render/ray_count.h"
+
+namespace rt {
+
+path_tracer::path_tracer(std::shared_ptr<const hittable> w, const background& b)
+    : world(std::move(w)), sky(b) {
+    require_given(world, "scene world");
+}
+
+color path_tracer::radiance(const ray& camera_ray, sampler& s, int max_depth) const {
+    ray r = camera_ray;
+    color radiance(0, 0, 0);
+    color throughput(1, 1, 1);  // product of the attenuations along the path so far
+    for (int segment = 0; segment < max_depth; ++segment) {
+        hit_record rec;
+        count_ray();
+        // Spawned rays start off their surface (hit_record::spawn_ray), so any t > 0 is a real hit.
+        if (!world->hit(r, interval(0, infinity), rec)) {
+            radiance += throughput * sky.radiance(r.direction());
+            break;
+        }
+        radiance += throughput * rec.mat->emitted(r, rec);  // [ch10]
+        s.start_segment(segment);                           // [ch16] the layout of sampler.h
+        color attenuation;
+        ray scattered;
+        if (!rec.mat->scatter(r, rec, s, attenuation, scattered)) break;
+        throughput = throughput * attenuation;
+        r          = scattered;
+    }
+    return radiance;
+}
+
+render_job path_trace(const scene& sc) {
+    return {sc.cam, std::make_shared<path_tracer>(sc.world, sc.sky), sc.settings};
+}
+
+}  // namespace rt

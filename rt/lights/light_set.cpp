@@ -1,0 +1,91 @@
+#include "rt/lights/light_set.h"
+
+#include <algorithm>
+
+#include "rt/lights/quad_light.h"
+#include "rt/lights/sky_light.h"
+#include "rt/lights/sphere_light.h"
+#include "rt/materials/diffuse_light.h"
+
+namespace rt {
+
+namespace {
+
+bool is_light(const std::shared_ptr<material>& m) {
+    return dynamic_cast<const diffuse_light*>(m.get()) != nullptr;
+}
+
+// Walks lists and BVHs down to their shapes and makes a light of every emitting one.
+class light_finder : public part_visitor {
+  public:
+    std::vector<std::unique_ptr<light>> found;
+    std::vector<const hittable*> shapes;
+
+    void visit(const hittable& part) override {
+        // Exactly these types: a moving_sphere derives from neither, and its light moves.
+        if (const auto* q = dynamic_cast<const quad*>(&part); q && is_light(q->surface()))
+            add(part, std::make_unique<quad_light>(*q));
+        else if (const auto* s = dynamic_cast<const sphere*>(&part); s && is_light(s->surface()))
+            add(part, std::make_unique<sphere_light>(*s));
+        else
+            part.visit_parts(*this);
+    }
+
+  private:
+    void add(const hittable& shape, std::unique_ptr<light> l) {
+        // A shape placed twice in the same list is still one light.
+        if (std::find(shapes.begin(), shapes.end(), &shape) != shapes.end()) return;
+        shapes.push_back(&shape);
+        found.push_back(std::move(l));
+    }
+};
+
+}  // namespace
+
+light_set::light_set(const hittable& world, const background& background_sky) {
+    light_finder finder;
+    finder.visit(world);
+    for (std::size_t i = 0; i < finder.found.size(); ++i)
+        light_of_shape[finder.shapes[i]] = finder.found[i].get();
+    lights = std::move(finder.found);
+    if (sky_light::emits(background_sky)) {
+        lights.push_back(std::make_unique<sky_light>(background_sky));
+        sky = lights.back().get();
+    }
+}
+
+bool light_set::sample(const point3& ref, real pick, sample2 u, light_sample& out) const {
+    if (lights.empty()) return false;
+    auto count = lights.size();
+    auto index = std::min(count - 1, static_cast<std::size_t>(pick * real(count)));
+    if (!lights[index]->sample(ref, u, out)) return false;
+    out.pdf /= real(count);
+    return true;
+}
+
+real light_set::pdf(const point3& ref, const vec3& wi) const {
+    real sum = 0;
+    for (const auto& l : lights) sum += l->pdf(ref, wi);
+    return lights.empty() ? 0 : sum / real(lights.size());
+}
+
+real light_set::pdf_of_hit(const point3& ref, const vec3& wi, const hit_record& hit) const {
+    auto found = light_of_shape.find(hit.object);
+    if (found == light_of_shape.end()) return 0;
+    // rec.object names the shape, not where it stands: a light's shape also placed by an
+    // instance is hit as the same object. Only the light where it stands itself is aimed at, so
+    // the hit counts as that light only if the shape, asked directly, is hit at the same point.
+    hit_record direct;
+    if (!hit.object->hit(ray(ref, wi), interval(0, infinity), direct)) return 0;
+    real apart = (direct.p - hit.p).length();
+    if (!(apart <=
+          4 * (direct.p_error + hit.p_error) + spawn_offset_scale * (hit.p - ref).length()))
+        return 0;
+    return found->second->pdf_at(ref, wi, direct) / real(lights.size());
+}
+
+real light_set::pdf_of_sky(const point3& ref, const vec3& wi) const {
+    return sky ? sky->pdf(ref, wi) / real(lights.size()) : 0;
+}
+
+}  // namespace rt

@@ -1,0 +1,49 @@
+// The lights of a scene, found in the scene itself: every sphere and quad whose material is a
+// diffuse_light, reached through lists and BVHs, and the sky when it is not black. There is no
+// second, hand-kept list that could disagree with the geometry. Chapter 14.
+// One light is chosen per light sample, each with the same probability 1 / count.
+// Not found (so only hit, never aimed at, and then counted with full weight, which keeps every
+// estimate unbiased): emitters inside instances, moving spheres that emit, textured emitters'
+// dark parts are still sampled.
+#pragma once
+
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+#include "rt/lights/light.h"
+#include "rt/scene/background.h"
+
+namespace rt {
+
+class light_set {
+  public:
+    light_set(const hittable& world, const background& sky);
+
+    bool empty() const { return lights.empty(); }
+    std::size_t size() const { return lights.size(); }
+
+    // Chooses a light with pick (uniform in [0, 1)) and samples it from ref; out.pdf includes
+    // the probability of the choice.
+    bool sample(const point3& ref, real pick, sample2 u, light_sample& out) const;
+
+    // The density sample() gives unit wi from ref, over every light (for book 3's mixture,
+    // which must know how likely any direction was, whichever light it came from).
+    real pdf(const point3& ref, const vec3& wi) const;
+
+    // The density of drawing wi from ref by aiming at the light that `hit` lies on (0 when that
+    // object is not one of the lights, or is a copy of one placed by an instance), choice
+    // included: the light's share of an MIS weight. ref must be the origin of the ray that made
+    // `hit` (not the surface point it was spawned from), so the shape, asked again, agrees.
+    real pdf_of_hit(const point3& ref, const vec3& wi, const hit_record& hit) const;
+
+    // The same for a ray that escaped to the sky.
+    real pdf_of_sky(const point3& ref, const vec3& wi) const;
+
+  private:
+    std::vector<std::unique_ptr<light>> lights;
+    std::unordered_map<const hittable*, const light*> light_of_shape;
+    const light* sky = nullptr;
+};
+
+}  // namespace rt

@@ -1,0 +1,27 @@
+// A quad that emits, sampled by area: a uniform point p = Q + a u + b v, (a, b) in [0, 1)^2, has
+// density 1 / A per unit area; seen from ref at distance d, the patch dA covers the solid angle
+// |cos theta_light| dA / d^2, so per solid angle
+//   pdf(wi) = d^2 / (|cos theta_light| A).
+// |cos|: book 2's lights emit on both faces, so both faces are sampled. Chapter 14.
+#pragma once
+
+#include "rt/geometry/quad.h"
+#include "rt/lights/light.h"
+
+namespace rt {
+
+class quad_light : public light {
+  public:
+    // shape must outlive this light (the scene owns both).
+    explicit quad_light(const quad& shape);
+
+    bool sample(const point3& ref, sample2 u, light_sample& out) const override;
+    real pdf(const point3& ref, const vec3& wi) const override;
+    real pdf_at(const point3& ref, const vec3& wi, const hit_record& hit) const override;
+
+  private:
+    const quad* shape;
+    real area;
+};
+
+}  // namespace rt

@@ -1,0 +1,35 @@
+#include "rt/materials/dielectric.h"
+
+#include <cmath>
+
+#include "rt/core/validate.h"
+#include "rt/materials/optics.h"
+
+namespace rt {
+
+dielectric::dielectric(real index, fresnel_model m) : ior(index), model(m) {
+    require_positive(index, "dielectric index of refraction");
+}
+
+real dielectric::reflectance(real cos_theta, real eta) const {
+    return model == fresnel_model::exact ? fresnel_reflectance(cos_theta, eta)
+                                         : schlick_reflectance(cos_theta, eta);
+}
+
+bool dielectric::scatter(const ray& r_in, const hit_record& rec, sampler& s, color& attenuation,
+                         ray& scattered) const {
+    real choice    = s.next_1d();
+    real eta       = rec.front_face ? 1 / ior : ior;
+    vec3 unit_dir  = unit_vector(r_in.direction());
+    real cos_theta = std::min(dot(-unit_dir, rec.normal), real(1));
+
+    bool reflects =
+        total_internal_reflection(cos_theta, eta) || reflectance(cos_theta, eta) > choice;
+    vec3 direction = reflects ? reflect(unit_dir, rec.normal) : refract(unit_dir, rec.normal, eta);
+
+    scattered   = rec.spawn_ray(r_in, direction);
+    attenuation = color(1, 1, 1);  // clear glass absorbs nothing
+    return true;
+}
+
+}  // namespace rt

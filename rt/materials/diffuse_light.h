@@ -1,0 +1,33 @@
+// An emitter: a surface that sends out light and reflects none. Chapter 10.
+// Like book 2 (whose Cornell scenes we match), it emits its texture's color on BOTH faces:
+// seen from behind, a light quad glows just as brightly. The integrator adds the emission
+// at every hit: L = Le + attenuation * L(scattered).
+#pragma once
+
+#include <memory>
+
+#include "rt/materials/material.h"
+#include "rt/textures/texture.h"
+
+namespace rt {
+
+class diffuse_light : public material {
+  public:
+    // Radiance per channel must be >= 0 and finite; throws user_error otherwise.
+    explicit diffuse_light(const color& radiance);
+    explicit diffuse_light(std::shared_ptr<texture> radiance);
+
+    color emitted(const ray&, const hit_record& rec) const override {
+        return radiance->value_at(rec);
+    }
+
+    // Absorbs every ray: a light does not reflect.
+    bool scatter(const ray&, const hit_record&, sampler&, color&, ray&) const override {
+        return false;
+    }
+
+  private:
+    std::shared_ptr<texture> radiance;
+};
+
+}  // namespace rt

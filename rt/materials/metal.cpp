@@ -1,0 +1,26 @@
+#include "rt/materials/metal.h"
+
+#include "rt/core/validate.h"
+#include "rt/materials/optics.h"
+#include "rt/samplers/sampling.h"
+
+namespace rt {
+
+metal::metal(const color& a, real f) : albedo(a), fuzz(f) {
+    require_reflectance(a, "metal albedo");
+    require_in_range(f, 0, 1, "metal fuzz");
+}
+
+bool metal::scatter(const ray& r_in, const hit_record& rec, sampler& s, color& attenuation,
+                    ray& scattered) const {
+    sample2 ball_uv = s.next_2d();
+    real ball_w     = s.next_1d();
+    vec3 reflected  = unit_vector(reflect(r_in.direction(), rec.normal));
+    vec3 direction  = reflected + fuzz * sample_uniform_ball(ball_uv, ball_w);
+    if (!(dot(direction, rec.normal) > 0)) return false;  // fuzzed under the surface
+    scattered   = rec.spawn_ray(r_in, direction);
+    attenuation = albedo;
+    return true;
+}
+
+}  // namespace rt

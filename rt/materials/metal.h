@@ -1,0 +1,24 @@
+// A metal: mirror reflection r = v - 2 (v.n) n, blurred by moving the reflected direction's tip
+// by up to `fuzz` inside a ball. Chapter 04. A fuzzed ray that points below the surface is
+// absorbed: the surface shadows it.
+#pragma once
+
+#include "rt/materials/material.h"
+
+namespace rt {
+
+class metal : public material {
+  public:
+    // Throws user_error unless albedo is in [0, 1] per channel and fuzz in [0, 1] (0 = mirror).
+    metal(const color& albedo, real fuzz);
+
+    // Draws 3 sampler dimensions (a point in the unit ball), even for a perfect mirror.
+    bool scatter(const ray& r_in, const hit_record& rec, sampler& s, color& attenuation,
+                 ray& scattered) const override;
+
+  private:
+    color albedo;
+    real fuzz;
+};
+
+}  // namespace rt

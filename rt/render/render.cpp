@@ -1,0 +1,104 @@
+#include "rt/render/render.h"
+
+#include <omp.h>
+
+#include <atomic>
+#include <string>
+
+#include "rt/core/validate.h"
+#include "rt/program/progress.h"
+#include "rt/render/ray_count.h"
+
+namespace rt {
+
+pixel_window window_of(const film& f, const render_settings& settings) {
+    if (!settings.crop) return pixel_window::whole(f);
+    const pixel_window w = *settings.crop;
+    const bool inside =
+        0 <= w.x0 && w.x0 < w.x1 && w.x1 <= f.width && 0 <= w.y0 && w.y0 < w.y1 && w.y1 <= f.height;
+    const std::string rule = "be a non-empty window X0,Y0,X1,Y1 inside the " +
+                             std::to_string(f.width) + " x " + std::to_string(f.height) +
+                             " image (0 <= X0 < X1 <= width, 0 <= Y0 < Y1 <= height)";
+    require(inside, "crop", rule.c_str(),
+            std::to_string(w.x0) + "," + std::to_string(w.y0) + "," + std::to_string(w.x1) + "," +
+                std::to_string(w.y1));
+    return w;
+}
+
+sample_range samples_of(const render_settings& settings) {
+    const int spp = settings.samples_per_pixel;
+    require(spp >= 1, "samples per pixel", "be at least 1", spp);
+    if (!settings.samples) return {0, spp};
+    const sample_range r = *settings.samples;
+    const std::string rule =
+        "satisfy 0 <= FROM < TO <= spp (" + std::to_string(spp) + ", the whole render's count)";
+    require(0 <= r.from && r.from < r.to && r.to <= spp, "sample range FROM:TO", rule.c_str(),
+            std::to_string(r.from) + ":" + std::to_string(r.to));
+    return r;
+}
+
+render_result render(const film& f, const camera& cam, const radiance_estimator& estimator,
+                     const render_settings& settings) {
+    const pixel_window window = window_of(f, settings);
+    const sample_range range  = samples_of(settings);
+    const int width = window.width(), height = window.height();
+    const int count = range.count();
+    // NOLINTNEXTLINE(clang-analyzer-deadcode.DeadStores): read by the omp pragma below
+    const int threads = settings.threads > 0 ? settings.threads : omp_get_num_procs();
+    render_result result{image(width, height), image(width, height), 0, window, range, 0, threads};
+    progress_meter progress(height, double(width) * count, settings.quiet);
+
+    std::atomic<std::uint64_t> rays{0};
+#pragma omp parallel num_threads(threads)
+    {
+        // Each thread counts its own rays (ray_count.h); what it counted here joins the total
+        // once, at the end, so the hot loop never touches shared memory for it.
+        const std::uint64_t rays_before = rays_traced_by_this_thread;
+        // Dynamic scheduling: rows through glass cost more than rows of sky.
+#pragma omp for schedule(dynamic, 1)
+        for (int row = 0; row < height; ++row) {
+            const int j = window.y0 + row;
+            sampler independent(settings.seed);
+            // [ch16 begin]
+            std::unique_ptr<sampler> chosen;
+            if (settings.make_sampler) chosen = settings.make_sampler(settings.seed);
+            // [ch16 end]
+            sampler& s = chosen ? *chosen : independent;  // [ch16]
+            for (int col = 0; col < width; ++col) {
+                const int i = window.x0 + col;
+                // Welford's running mean and sum of squared deviations m2, in double: the order
+                // is fixed per pixel, so the result is too. Unlike sum and sum of squares, whose
+                // difference cancels, it gives variance exactly 0 (and the mean exactly L) when
+                // every sample is the same L, and m2 never goes negative.
+                double mean[3] = {0, 0, 0}, m2[3] = {0, 0, 0};
+                for (int k = range.from; k < range.to; ++k) {
+                    s.start_pixel_sample(i, j, k);
+                    color L     = estimator.radiance(cam.get_ray(i, j, s), s, settings.max_depth);
+                    const int n = k - range.from + 1;
+                    for (int c = 0; c < 3; ++c) {
+                        double x     = double(L[c]);
+                        double delta = x - mean[c];
+                        mean[c] += delta / n;
+                        m2[c] += delta * (x - mean[c]);
+                    }
+                }
+                color pixel_mean, variance;
+                for (int c = 0; c < 3; ++c) {
+                    double sample_var = count > 1 ? m2[c] / (count - 1) : 0.0;
+                    pixel_mean[c]     = real(mean[c]);
+                    variance[c]       = real(sample_var / count);
+                }
+                result.mean.set(col, row, pixel_mean);
+                result.mean_variance.set(col, row, variance);
+            }
+            progress.row_done();
+        }
+        rays += rays_traced_by_this_thread - rays_before;
+    }
+    progress.finish();
+    result.seconds = progress.elapsed_seconds();
+    result.rays    = rays.load();
+    return result;
+}
+
+}  // namespace rt

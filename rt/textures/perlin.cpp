@@ -1,0 +1,71 @@
+#include "rt/textures/perlin.h"
+
+#include <cmath>
+
+#include "rt/core/rng.h"
+#include "rt/samplers/sampling.h"
+
+namespace rt {
+
+namespace {
+
+// Fisher-Yates shuffle of 0..255.
+std::array<int, 256> permutation(pcg32& rng) {
+    std::array<int, 256> p{};
+    for (int i = 0; i < 256; ++i) p[std::size_t(i)] = i;
+    for (int i = 255; i > 0; --i) {
+        auto j = int(rng.next_u32() % std::uint32_t(i + 1));
+        std::swap(p[std::size_t(i)], p[std::size_t(j)]);
+    }
+    return p;
+}
+
+}  // namespace
+
+perlin::perlin(std::uint64_t seed) {
+    pcg32 rng(/*sequence=*/0x9e71, seed);
+    for (auto& g : gradients) {
+        // Uniform unit vectors (the book normalizes points of a cube, which favours diagonals).
+        real u = rng.uniform();
+        g      = sample_uniform_sphere({u, rng.uniform()});
+    }
+    perm_x = permutation(rng);
+    perm_y = permutation(rng);
+    perm_z = permutation(rng);
+}
+
+real perlin::noise(const point3& p) const {
+    const real fx = std::floor(p.x()), fy = std::floor(p.y()), fz = std::floor(p.z());
+    const real u = p.x() - fx, v = p.y() - fy, w = p.z() - fz;
+    // Lattice indices wrap every 256 cells; long long keeps huge coordinates from overflowing.
+    const auto i = static_cast<long long>(fx), j = static_cast<long long>(fy),
+               k  = static_cast<long long>(fz);
+    const real su = u * u * (3 - 2 * u), sv = v * v * (3 - 2 * v), sw = w * w * (3 - 2 * w);
+
+    real sum = 0;
+    for (int di = 0; di < 2; ++di) {
+        for (int dj = 0; dj < 2; ++dj) {
+            for (int dk = 0; dk < 2; ++dk) {
+                const vec3& g = gradients[std::size_t(perm_x[std::size_t((i + di) & 255)] ^
+                                                      perm_y[std::size_t((j + dj) & 255)] ^
+                                                      perm_z[std::size_t((k + dk) & 255)])];
+                vec3 offset(u - real(di), v - real(dj), w - real(dk));
+                real weight = (di ? su : 1 - su) * (dj ? sv : 1 - sv) * (dk ? sw : 1 - sw);
+                sum += weight * dot(g, offset);
+            }
+        }
+    }
+    return sum;
+}
+
+real perlin::turbulence(point3 p, int depth) const {
+    real sum = 0, weight = 1;
+    for (int i = 0; i < depth; ++i) {
+        sum += weight * noise(p);
+        weight *= real(0.5);
+        p = 2 * p;
+    }
+    return std::fabs(sum);
+}
+
+}  // namespace rt

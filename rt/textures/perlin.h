@@ -1,0 +1,34 @@
+// Perlin gradient noise. Chapter 09.
+// Each lattice point of the integer grid gets a random unit gradient g (256 of them, picked
+// through three permutation tables by hashing the point's x, y, z). The noise at p is the
+// trilinear blend of the eight corner planes g . (p - corner), with Hermite-smoothed weights
+// s(t) = t^2 (3 - 2t), so it is continuous with a continuous gradient, and 0 at every lattice
+// point. With unit gradients its values lie within [-sqrt(3)/2, sqrt(3)/2], inside [-1, 1]
+// (the known bound for 3D gradient noise; test_perlin checks it over many points).
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "rt/core/vec3.h"
+
+namespace rt {
+
+class perlin {
+  public:
+    // The tables come from a PCG32 seeded with `seed`: the same seed gives the same noise.
+    explicit perlin(std::uint64_t seed = 0);
+
+    // Smooth noise in [-1, 1], 0 at integer points.
+    real noise(const point3& p) const;
+
+    // Sum of |octaves|: sum_{i<depth} 0.5^i noise(2^i p), then its absolute value; in [0, 2).
+    real turbulence(point3 p, int depth = 7) const;
+
+  private:
+    static constexpr int point_count = 256;
+    std::array<vec3, point_count> gradients;
+    std::array<int, point_count> perm_x, perm_y, perm_z;
+};
+
+}  // namespace rt
