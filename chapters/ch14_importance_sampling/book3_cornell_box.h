@@ -1,6 +1,6 @@
 // Book 3's Cornell box: book 2's room and tall box, with a glass sphere where the short box
 // stood. Book 3 also lists the glass sphere among its "lights" so that some rays aim at it; we
-// find lights in the scene itself (common/light_set.h), so only the ceiling lamp is aimed at.
+// find lights in the scene itself (rt/lights/light_set.h), so only the ceiling lamp is aimed at.
 #pragma once
 
 #include <memory>

@@ -1,4 +1,4 @@
-// background (common/background.h): what a ray that hits nothing sees, a vertical blend from
+// background (rt/scene/background.h): what a ray that hits nothing sees, a vertical blend from
 // bottom (straight down) to top (straight up), and sky_only, chapter 01's whole renderer.
 // Chapter 01.
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-// camera (common/camera.h): which ray each pixel sample gets from chapter 01's pinhole at the
+// camera (rt/camera/camera.h): which ray each pixel sample gets from chapter 01's pinhole at the
 // origin, looking down -z. Chapter 01 (chapter 06's thin_lens_camera is tested in its folder).
 // The camera draws sampler dimensions 0-1 (the jitter) and no more; a copy of the sampler taken
 // before get_ray replays them, so the expected ray can be computed exactly.

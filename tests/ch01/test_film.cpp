@@ -1,4 +1,4 @@
-// film (common/film.h): the one owner of the image's size. The height follows from the width
+// film (rt/render/film.h): the one owner of the image's size. The height follows from the width
 // and the aspect ratio, rounded down as in the book, and is at least 1. Chapter 01.
 #include <algorithm>
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-// ray (common/ray.h): P(t) = A + t b, and continued(), the next segment of the same path.
+// ray (rt/core/ray.h): P(t) = A + t b, and continued(), the next segment of the same path.
 // Chapter 01. (The instant a ray carries, and that continued() keeps it, is chapter 07's.)
 #include <catch2/catch.hpp>
 

@@ -1,4 +1,4 @@
-// pcg32 and the sampler (common/rng.h, common/sampler.h): reproducible streams, jump-ahead, and a
+// pcg32 and the sampler (rt/core/rng.h, rt/samplers/sampler.h): reproducible streams, jump-ahead, and a
 // stream per pixel sample that does not depend on what was drawn before. Chapter 01.
 #include <catch2/catch.hpp>
 #include <cstdint>

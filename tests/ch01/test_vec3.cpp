@@ -1,4 +1,4 @@
-// vec3 (common/vec3.h): the algebra every later chapter builds on. Chapter 01.
+// vec3 (rt/core/vec3.h): the algebra every later chapter builds on. Chapter 01.
 // Small integers and halves are exact in binary floating point, so most cases compare with ==.
 #include <catch2/catch.hpp>
 #include <cmath>

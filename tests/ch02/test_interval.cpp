@@ -1,4 +1,4 @@
-// interval (common/interval.h): closed [min, max] ranges of t and of color channels. Chapter 02.
+// interval (rt/core/interval.h): closed [min, max] ranges of t and of color channels. Chapter 02.
 #include <catch2/catch.hpp>
 
 #include "rt/core/interval.h"

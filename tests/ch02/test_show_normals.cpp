@@ -1,4 +1,4 @@
-// show_normals (common/show_normals.h): chapter 02's way of seeing a scene. Each sample shows
+// show_normals (rt/integrators/show_normals.h): chapter 02's way of seeing a scene. Each sample shows
 // the unit outward normal n of the nearest hit as the color 0.5 (n + 1), whichever side the ray
 // comes from, and the sky where nothing is hit; it draws nothing from the sampler. Chapter 02.
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-// The checks every warp of common/sampling.h is held to (chapter 03 on; included as
+// The checks every warp of rt/samplers/sampling.h is held to (chapter 03 on; included as
 // "ch03/sampling_checks.h"): every sample lies in its domain, a chi-square test of warped samples
 // against expected counts integrated from the pdf over each bin, and the pdf function integrated
 // numerically over the same bins (they must sum to 1). A binning (disk_bins in test_sampling.cpp,

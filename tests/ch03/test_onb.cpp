@@ -1,4 +1,4 @@
-// onb (common/onb.h): an orthonormal frame about a unit normal, so that directions sampled about
+// onb (rt/core/onb.h): an orthonormal frame about a unit normal, so that directions sampled about
 // +z can be turned about any surface normal. Chapter 03.
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -1,4 +1,4 @@
-// The warps of common/sampling.h that chapter 03 brings, each held to its pdf
+// The warps of rt/samplers/sampling.h that chapter 03 brings, each held to its pdf
 // (ch03/sampling_checks.h): the uniform disk (which chapter 06's lens also samples), the uniform
 // sphere, and the cosine-weighted hemisphere built on the disk. Chapter 03.
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-// The optics of chapter 04 (common/optics.h): mirror reflection r = v - 2 (v.n) n. (Refraction
+// The optics of chapter 04 (rt/materials/optics.h): mirror reflection r = v - 2 (v.n) n. (Refraction
 // and the Fresnel reflectance are chapter 05's.)
 #include <catch2/catch.hpp>
 #include <cmath>

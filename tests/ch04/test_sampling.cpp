@@ -1,4 +1,4 @@
-// The warp of common/sampling.h that chapter 04 brings for fuzzy metal, held to its pdf
+// The warp of rt/samplers/sampling.h that chapter 04 brings for fuzzy metal, held to its pdf
 // (ch03/sampling_checks.h): the uniform ball. Chapter 04.
 #include <catch2/catch.hpp>
 #include <cmath>

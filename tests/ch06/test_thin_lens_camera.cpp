@@ -1,4 +1,4 @@
-// thin_lens_camera (common/thin_lens_camera.h): a camera that stands anywhere and focuses like a
+// thin_lens_camera (rt/camera/thin_lens_camera.h): a camera that stands anywhere and focuses like a
 // thin lens. Chapter 06. (Its shutter is chapter 07's.)
 // It draws sampler dimensions 0-1 (jitter), then 2-3 (the lens) only when aperture > 0; a copy
 // of the sampler taken before get_ray replays those numbers, so the expected ray can be computed.

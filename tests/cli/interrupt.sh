@@ -5,7 +5,7 @@
 # Moments: during the render (a long one, before any file is opened), and during the write of a
 # large .pfm (once its temporary file holds some bytes) and of a large .png (once its temporary
 # file exists: stb compresses the whole image, then writes it at once); and with several outputs
-# (common/output_set.h: all or none), during the write of the second, when the first is complete
+# (rt/files/output_set.h: all or none), during the write of the second, when the first is complete
 # in its temporary file.
 set -uo pipefail
 exe=$1

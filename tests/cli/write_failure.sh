@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A run writes all its outputs or none (common/output_set.h): write_failure.sh EXE EXTENSION
+# A run writes all its outputs or none (rt/files/output_set.h): write_failure.sh EXE EXTENSION
 #  - a write that fails half way (file size limit, like a full disk) exits with code 2, names the
 #    file and the reason, keeps the existing output as it was and leaves no temporary file;
 #  - so does a second --out that cannot be created (/proc/new.EXT), and the first output, written

@@ -198,7 +198,7 @@ int merge(int width, int height, int spp, const std::vector<std::vector<std::str
     }
     image mean(width, height), variance(width, height);
     for (auto& [key, group] : windows) combine(group, with_variance, mean, variance);
-    rt::output_set files;  // all or none, as a chapter's run (common/output_set.h)
+    rt::output_set files;  // all or none, as a chapter's run (rt/files/output_set.h)
     for (const auto& path : outputs) rt::write_image(files, path, mean);
     if (with_variance) rt::write_image(files, variance_output, variance);
     files.commit();
