@@ -62,7 +62,6 @@ recorded_rays record_rays(const rt::scene& sc, int samples_per_pixel, std::size_
     rt::render_settings settings = sc.settings;
     settings.samples_per_pixel   = samples_per_pixel;
     settings.threads             = 1;  // the recorder is not thread-safe, and the order is fixed
-    settings.quiet               = true;
     rt::film f                   = rt::film::for_aspect(settings.width, sc.cam->aspect_ratio);
     sc.cam->initialize(f);
     rt::render(f, *sc.cam, rt::path_tracer(recorder, sc.sky), settings);

@@ -25,6 +25,7 @@
 #include "rt/core/scalar.h"
 #include "rt/core/vec3.h"
 #include "rt/image/image.h"
+#include "rt/image/image_io.h"
 #include "rt/samplers/sampler.h"
 
 namespace rt_test {
@@ -95,6 +96,24 @@ inline bool same_bits(const rt::image& a, const rt::image& b) {
            std::memcmp(a.data().data(), b.data().data(), a.data().size() * sizeof(float)) == 0;
 }
 
+// An image whose floats exercise every kind of value a PFM must carry: signs, -0, float
+// subnormals, the largest float, and ordinary radiance values; no two pixels alike.
+inline rt::image varied_image(int width, int height) {
+    const float specials[] = {0.0f,  -0.0f, 1e-40f, std::numeric_limits<float>::max(),
+                              -1.5f, 1e-3f, 0.1f,   65504.0f};
+    rt::image img(width, height);
+    int n = 0;
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x, ++n) {
+            float r = specials[n % 8];
+            float g = float(x) / 7.0f + float(y);
+            float b = -float(n) * 0.37f;
+            img.set(x, y, rt::color(rt::real(r), rt::real(g), rt::real(b)));
+        }
+    }
+    return img;
+}
+
 // The whole content of a file, byte for byte ("" if it cannot be read).
 inline std::string read_bytes(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
@@ -104,6 +123,18 @@ inline std::string read_bytes(const std::string& path) {
 // Writes `bytes` as the whole content of a file, to set up a file that a test then reads.
 inline void write_bytes(const std::string& path, const std::string& bytes) {
     std::ofstream(path, std::ios::binary) << bytes;
+}
+
+// Writes img as the file `path`, in the format its extension names (.png or .pfm): a test's
+// own plain write, so that tests of chapters need no part of the program's all-or-none outputs.
+inline void write_image_file(const std::string& path, const rt::image& img) {
+    std::ofstream out(path, std::ios::binary);
+    const auto format = rt::format_of(path);
+    REQUIRE(format);
+    REQUIRE(rt::encode_image(img, *format, [&out](const void* data, std::size_t size) {
+        out.write(static_cast<const char*>(data), std::streamsize(size));
+    }));
+    REQUIRE(out.good());
 }
 
 // A fresh, empty folder under the system's temporary folder, removed with everything in it.

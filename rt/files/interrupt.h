@@ -1,4 +1,4 @@
-// An interrupted program leaves no half-written file behind. Chapter 01.
+// An interrupted program leaves no half-written file behind.
 // SIGINT (Ctrl-C), SIGTERM (kill) and SIGHUP (the terminal closed) end a render at once, as they
 // would without us. What we add: while a run's outputs are being written to their temporary
 // files (output_set.h writes each one beside its target, then renames them all onto their

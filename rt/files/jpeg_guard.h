@@ -1,5 +1,5 @@
 // A guard against JPEG files that Debian 12's stb_image (2.27) decodes unsafely, run before it
-// decodes a texture. Chapter 08. Found by the fuzz target fuzz/fuzz_texture.cpp:
+// decodes a texture (chapter 08's image_texture). Found by the fuzz target fuzz/fuzz_texture.cpp:
 //   - a Huffman table (DHT segment) whose 16 code counts add up to more than 256: stb 2.27
 //     writes that many code lengths and symbols into arrays of 257 and 256 bytes (a heap
 //     buffer overflow; stb 2.28 added the check). A valid table has at most 256 codes.

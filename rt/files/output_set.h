@@ -1,4 +1,4 @@
-// The files one run writes, all or none. Chapter 01.
+// The files one run writes, all or none.
 // Each output is written in full to a temporary file beside its target ("<target>.tmp.<pid>.<n>":
 // the same folder, so the same file system, where a rename replaces the target in one step).
 // Only when every output is written does commit() rename them onto their targets, in the order

@@ -1,4 +1,5 @@
-// A guard against PNG decompression bombs, run before stb_image decodes a texture. Chapter 08.
+// A guard against PNG decompression bombs, run before stb_image decodes a texture (chapter
+// 08's image_texture).
 // A PNG's pixels are one zlib stream, and stb_image inflates all of it, however long, before it
 // looks at how much the image needs: a 1 MB PNG that claims 1 x 1 texels inflates to 1 GiB of
 // memory (stb stops only at 2 GiB), which the texel limit (image_texture.h) never sees. So the

@@ -1,6 +1,6 @@
 // A guard against binary PPM/PGM files that Debian 12's stb_image (2.27) reads unsafely, run
-// before it decodes a texture. Chapter 08. Found by the fuzz target fuzz/fuzz_texture.cpp and by
-// reading the decoder it pointed at:
+// before it decodes a texture (chapter 08's image_texture). Found by the fuzz target
+// fuzz/fuzz_texture.cpp and by reading the decoder it pointed at:
 //   - a number in the header beyond 2^31 - 1: stb adds up its digits in an int, which overflows
 //     (undefined behaviour; stb 2.28 added the check);
 //   - texel data shorter than the header's size: stb ignores the short read and hands back a

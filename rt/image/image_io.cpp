@@ -18,61 +18,40 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string extension_of(const std::string& path) {
-    return fs::path(path).extension().string();
-}
-
-// Through our own sink: stbi_write_png ignores fwrite/fclose errors (a full disk would give a
-// truncated PNG and "success"); temporary_file remembers them. stb compresses the whole image,
-// then hands it over in one piece.
-void write_png(temporary_file& file, const std::string& path, const image& img) {
+// stb compresses the whole image, then hands it over in one piece.
+bool encode_png(const image& img, const byte_sink& sink) {
     std::vector<std::uint8_t> bytes(img.data().size());
     for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = to_srgb8(img.data()[i]);
-    auto append = [](void* context, void* data, int size) {
-        static_cast<temporary_file*>(context)->append(data, std::size_t(size));
+    auto to_sink = [](void* context, void* data, int size) {
+        (*static_cast<const byte_sink*>(context))(data, std::size_t(size));
     };
-    if (!stbi_write_png_to_func(append, &file, img.width(), img.height(), 3, bytes.data(),
-                                img.width() * 3))
-        throw user_error("cannot write '" + path + "': the PNG encoder failed (out of memory)");
+    return stbi_write_png_to_func(to_sink, const_cast<byte_sink*>(&sink), img.width(), img.height(),
+                                  3, bytes.data(), img.width() * 3) != 0;
 }
 
-void write_pfm(temporary_file& file, const image& img) {
+void encode_pfm(const image& img, const byte_sink& sink) {
     static_assert(std::endian::native == std::endian::little, "PFM writer assumes little-endian");
     const std::string header =
         "PF\n" + std::to_string(img.width()) + ' ' + std::to_string(img.height()) + "\n-1.0\n";
-    file.append(header.data(), header.size());
+    sink(header.data(), header.size());
     const std::size_t row_floats = std::size_t(img.width()) * 3;
     for (int y = img.height() - 1; y >= 0; --y)  // PFM stores the bottom row first
-        file.append(img.data().data() + std::size_t(y) * row_floats, row_floats * sizeof(float));
+        sink(img.data().data() + std::size_t(y) * row_floats, row_floats * sizeof(float));
 }
 
 }  // namespace
 
-std::string output_path_problem(const std::string& path) {
-    std::string ext = extension_of(path);
-    if (ext != ".png" && ext != ".pfm")
-        return "output '" + path + "' has an unknown extension '" + ext + "' (use .png or .pfm)";
-    fs::path folder = fs::path(path).parent_path();
-    if (folder.empty()) folder = ".";
-    std::error_code ec;
-    if (!fs::is_directory(folder, ec))
-        return "output '" + path + "': folder '" + folder.string() + "' does not exist";
-    if (fs::is_directory(path, ec)) return "output '" + path + "' is a folder";
-    return "";
+std::optional<image_format> format_of(const std::string& path) {
+    const std::string ext = fs::path(path).extension().string();
+    if (ext == ".png") return image_format::png;
+    if (ext == ".pfm") return image_format::pfm;
+    return std::nullopt;
 }
 
-void write_image(output_set& outputs, const std::string& path, const image& img) {
-    if (auto problem = output_path_problem(path); !problem.empty()) throw user_error(problem);
-    if (extension_of(path) == ".png")
-        outputs.add(path, [&](temporary_file& file) { write_png(file, path, img); });
-    else
-        outputs.add(path, [&](temporary_file& file) { write_pfm(file, img); });
-}
-
-void write_image(const std::string& path, const image& img) {
-    output_set one;
-    write_image(one, path, img);
-    one.commit();
+bool encode_image(const image& img, image_format format, const byte_sink& sink) {
+    if (format == image_format::png) return encode_png(img, sink);
+    encode_pfm(img, sink);
+    return true;
 }
 
 image read_pfm(const std::string& path) {

@@ -1,28 +1,31 @@
-// Writing and reading images. Chapter 01.
-// .png: 8-bit sRGB-encoded RGB (display_encoding.h), written with stb_image_write.
+// Image files. Chapter 01.
+// .png: 8-bit sRGB-encoded RGB (display_encoding.h), encoded by stb_image_write.
 // .pfm: exact linear float32 RGB, the Portable Float Map: header "PF\n<w> <h>\n-1.0\n" (negative
 //       scale = little-endian), then rows from the BOTTOM of the image to the top.
-// Every write goes to a temporary file beside the target and is renamed over it only when
-// complete (output_set.h), so a failed or interrupted write never leaves a partial or truncated
-// file; a run puts all its images in one output_set, so it replaces all of them or none.
+// The encoder hands its bytes to a sink rather than to a file, so that the program can write
+// every output of a run all or none (rt/files/image_outputs.h) with these same bytes.
 #pragma once
 
+#include <cstddef>
+#include <functional>
+#include <optional>
 #include <string>
 
-#include "rt/files/output_set.h"
 #include "rt/image/image.h"
 
 namespace rt {
 
-// Empty when `path` can be written (known extension, existing folder); else the reason.
-std::string output_path_problem(const std::string& path);
+enum class image_format { png, pfm };
 
-// Writes img into `outputs`, in the format named by path's extension: complete in its temporary
-// file now, onto `path` at outputs.commit(). Throws user_error naming path and the reason.
-void write_image(output_set& outputs, const std::string& path, const image& img);
+// The format a file name's extension names (".png", ".pfm"); none for any other.
+std::optional<image_format> format_of(const std::string& path);
 
-// One image on its own: written and renamed onto path at once. Throws user_error on failure.
-void write_image(const std::string& path, const image& img);
+// Receives an encoded image in pieces, in order.
+using byte_sink = std::function<void(const void* data, std::size_t size)>;
+
+// Encodes img in the given format into sink. False only when the PNG encoder could not get the
+// memory it needs.
+bool encode_image(const image& img, image_format format, const byte_sink& sink);
 
 // Reads a little- or big-endian RGB PFM. Throws user_error on a missing or malformed file.
 image read_pfm(const std::string& path);

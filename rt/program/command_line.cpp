@@ -1,88 +1,19 @@
 #include "rt/program/command_line.h"
 
-#include <omp.h>
-
-#include <charconv>
-#include <chrono>
-#include <cmath>
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
-#include <sstream>
 
 #include "rt/core/error.h"
+#include "rt/files/image_outputs.h"
 #include "rt/files/output_set.h"
-#include "rt/image/image_io.h"
-#include "rt/program/run_stats.h"
+#include "rt/program/progress.h"
+#include "rt/render/film.h"
 
 namespace rt {
 
 namespace {
-
-// CLI11 validator for output files: the error names the value and what is wrong with it.
-CLI::Validator output_file(const std::vector<std::string>& extensions) {
-    return CLI::Validator(
-        [extensions](std::string& path) -> std::string {
-            std::string problem = output_path_problem(path);
-            if (!problem.empty()) return problem;
-            for (const auto& ext : extensions)
-                if (path.size() >= ext.size() && path.ends_with(ext)) return "";
-            return "output '" + path + "' must end in " + extensions.front();
-        },
-        "FILE");
-}
-
-// Exactly `count` decimal integers separated by `separator`, and nothing else: "0,0,20,10" for
-// four and ','; not "0,0,20", "0,0,20,10," or " 0,0,20,10".
-bool parse_integers(const std::string& text, char separator, int count, int* out) {
-    const char* p   = text.data();
-    const char* end = text.data() + text.size();
-    for (int i = 0; i < count; ++i) {
-        if (i > 0) {
-            if (p == end || *p != separator) return false;
-            ++p;
-        }
-        auto [next, ec] = std::from_chars(p, end, out[i]);
-        if (ec != std::errc() || next == p) return false;
-        p = next;
-    }
-    return p == end;
-}
-
-std::optional<pixel_window> parse_crop(const std::string& text) {
-    int v[4];
-    if (!parse_integers(text, ',', 4, v)) return std::nullopt;
-    return pixel_window{v[0], v[1], v[2], v[3]};
-}
-
-std::optional<sample_range> parse_samples(const std::string& text) {
-    int v[2];
-    if (!parse_integers(text, ':', 2, v)) return std::nullopt;
-    return sample_range{v[0], v[1]};
-}
-
-// The syntax is checked while parsing; whether the values fit the image and the sample count
-// is known only once the scene is built (render.h: window_of, samples_of).
-CLI::Validator crop_syntax() {
-    return CLI::Validator(
-        [](std::string& text) -> std::string {
-            return parse_crop(text) ? "" : "crop must be X0,Y0,X1,Y1 (integers), got " + text;
-        },
-        "X0,Y0,X1,Y1");
-}
-
-CLI::Validator samples_syntax() {
-    return CLI::Validator(
-        [](std::string& text) -> std::string {
-            return parse_samples(text) ? ""
-                                       : "sample range must be FROM:TO (integers), got " + text;
-        },
-        "FROM:TO");
-}
-
-CLI::Validator stats_file() {
-    return CLI::Validator([](std::string& path) { return stats_path_problem(path); }, "FILE");
-}
 
 void print_summary(const std::string& name, const film& f, const render_settings& s,
                    const render_result& r) {
@@ -112,56 +43,13 @@ bool same_file(const std::string& a, const std::string& b) {
     return resolved(a) == resolved(b);
 }
 
-// [ch16 begin]
 // The name of the sampler the settings choose (chapter 01's independent one unless a later
 // chapter's program chose another).
 std::string sampler_name(const render_settings& s) {
     return s.make_sampler ? s.make_sampler(s.seed)->name() : sampler(s.seed).name();
 }
-// [ch16 end]
-
-// [ch06 begin]
-// "must be a finite number <relation> <lo>" unless the whole text is a finite number that
-// satisfies it.
-CLI::Validator finite_number(double lo, bool lo_allowed) {
-    std::ostringstream rule;
-    rule << "must be a finite number " << (lo_allowed ? ">= " : "> ") << lo;
-    return CLI::Validator(
-        [lo, lo_allowed, rule = rule.str()](std::string& text) -> std::string {
-            double value   = 0;
-            auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-            const bool ok  = ec == std::errc() && end == text.data() + text.size() &&
-                            std::isfinite(value) && (value > lo || (lo_allowed && value == lo));
-            return ok ? "" : rule + ", got " + text;
-        },
-        rule.str().substr(8));  // the help shows "FLOAT:a finite number >= 0"
-}
-// [ch06 end]
 
 }  // namespace
-
-CLI::Validator integer_in(std::uint64_t lo, std::uint64_t hi) {
-    return CLI::Validator(
-        [lo, hi](std::string& text) -> std::string {
-            std::uint64_t value = 0;
-            auto [end, ec]      = std::from_chars(text.data(), text.data() + text.size(), value);
-            if (ec == std::errc() && end == text.data() + text.size() && value >= lo && value <= hi)
-                return "";
-            return "must be an integer from " + std::to_string(lo) + " to " + std::to_string(hi) +
-                   ", got " + text;
-        },
-        // The help shows "INT:INT in [1, 16384]"; a bound of 2^64 - 1 (--seed) says nothing.
-        hi == UINT64_MAX ? "" : "INT in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-}
-
-// [ch06 begin]
-CLI::Validator number_at_least(double lo) {
-    return finite_number(lo, true);
-}
-CLI::Validator number_above(double lo) {
-    return finite_number(lo, false);
-}
-// [ch06 end]
 
 command_line::command_line(std::string program_name)
     : program(std::move(program_name)), cli(program) {
@@ -180,13 +68,13 @@ command_line::command_line(std::string program_name)
     cli.add_option("--threads", flags.threads, "Worker threads; 0 = all cores")
         ->check(integer_in(0, 1024))
         ->capture_default_str();
-    cli.add_option("--out", outputs, "Output image, .png or .pfm; may repeat")
+    cli.add_option("--out", outputs.images, "Output image, .png or .pfm; may repeat")
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
         ->check(output_file({".png", ".pfm"}));
-    cli.add_option("--variance-out", variance_output,
+    cli.add_option("--variance-out", outputs.variance,
                    "Also write the variance of each pixel's mean, as .pfm")
         ->check(output_file({".pfm"}));
-    cli.add_option("--stats-out", stats_output,
+    cli.add_option("--stats-out", outputs.stats,
                    "Also write the record of the run (time, samples, rays, settings) as .json")
         ->check(stats_file());
     cli.add_option("--crop", crop_text,
@@ -197,7 +85,7 @@ command_line::command_line(std::string program_name)
                    "Render only sample indices FROM <= k < TO of each pixel; --spp stays the "
                    "whole render's count (TO <= spp)")
         ->check(samples_syntax());
-    cli.add_flag("--quiet", flags.quiet, "No progress or summary on stderr");
+    cli.add_flag("--quiet", quiet, "No progress or summary on stderr");
     for (const CLI::Option* option : cli.get_options()) shared_options.push_back(option);
 }
 
@@ -208,7 +96,6 @@ render_settings command_line::with_flags(render_settings s) const {
     if (given("--max-depth")) s.max_depth = flags.max_depth;
     if (given("--seed")) s.seed = flags.seed;
     if (given("--threads")) s.threads = flags.threads;
-    if (given("--quiet")) s.quiet = flags.quiet;
     if (given("--crop")) s.crop = parse_crop(crop_text);
     if (given("--samples")) s.samples = parse_samples(samples_text);
     return s;
@@ -241,10 +128,11 @@ std::optional<int> command_line::parse(int argc, char** argv) {
         std::fprintf(stderr, "%s: error: %s\n", program.c_str(), e.what());
         return 2;
     }
-    if (outputs.empty()) outputs.push_back(program + ".png");
+    command.assign(argv, argv + argc);
+    if (outputs.images.empty()) outputs.images.push_back(program + ".png");
     // Refused now, not after the render: one run's files are written as one output_set.
-    const std::size_t files =
-        outputs.size() + (variance_output.empty() ? 0 : 1) + (stats_output.empty() ? 0 : 1);
+    const std::size_t files = outputs.images.size() + (outputs.variance.empty() ? 0 : 1) +
+                              (outputs.stats.empty() ? 0 : 1);
     if (files > std::size_t(output_set::max_files)) {
         std::fprintf(stderr,
                      "%s: error: --out, --variance-out and --stats-out must name at most %d files "
@@ -253,54 +141,72 @@ std::optional<int> command_line::parse(int argc, char** argv) {
         return 2;
     }
     // Written after the images, the variance would replace one of them without a word.
-    for (const auto& path : outputs)
-        if (!variance_output.empty() && same_file(path, variance_output)) {
+    for (const auto& path : outputs.images)
+        if (!outputs.variance.empty() && same_file(path, outputs.variance)) {
             std::fprintf(stderr, "%s: error: --variance-out must differ from every --out, got %s\n",
-                         program.c_str(), variance_output.c_str());
+                         program.c_str(), outputs.variance.c_str());
             return 2;
         }
     return std::nullopt;
 }
 
-int command_line::run(int argc, char** argv, const std::function<render_job()>& build) {
-    const auto start = std::chrono::steady_clock::now();
-    if (auto stop = parse(argc, argv)) return *stop;
+render_result command_line::render_with_progress(const film& f, const render_job& job,
+                                                 const render_settings& settings) const {
+    const pixel_window window = window_of(f, settings);
+    progress_meter progress(window.height(), double(window.width()) * samples_of(settings).count(),
+                            quiet);
+    render_result result = render(f, *job.cam, *job.estimator, settings, &progress);
+    progress.finish();
+    return result;
+}
 
+run_stats command_line::record_of(const render_job& job, const film& f,
+                                  const render_settings& settings, const render_result& result,
+                                  clock::time_point start) const {
+    run_stats record{
+        .program         = program,
+        .integrator      = std::string(job.estimator->name()),
+        .sampler         = sampler_name(settings),
+        .options         = chapter_options(),
+        .command         = command,
+        .full            = f,
+        .settings        = settings,
+        .window          = result.window,
+        .samples         = result.samples,
+        .rays            = result.rays,
+        .seconds         = result.seconds,
+        .process_seconds = std::chrono::duration<double>(clock::now() - start).count(),
+        .outputs         = outputs.images,
+        .variance_output = outputs.variance,
+    };
+    record.settings.threads = result.threads;
+    return record;
+}
+
+void command_line::write_outputs(const render_result& result,
+                                 const std::function<run_stats()>& make_record) const {
+    // All or none: each file is written in full beside its target, and only when every one is
+    // does commit() rename them onto their targets. A failure or an interrupt before that leaves
+    // every old file as it was (output_set.h).
+    output_set files;
+    for (const auto& path : outputs.images) write_image(files, path, result.mean);
+    if (!outputs.variance.empty()) write_image(files, outputs.variance, result.mean_variance);
+    // Added last, so renamed last: a stats file means every image of the run is complete.
+    if (!outputs.stats.empty()) write_stats(files, outputs.stats, make_record());
+    files.commit();
+}
+
+int command_line::run(int argc, char** argv, const std::function<render_job()>& build) {
+    const auto start = clock::now();
+    if (auto stop = parse(argc, argv)) return *stop;
     try {
-        render_job job          = build();
-        render_settings setting = with_flags(job.settings);
-        film f                  = film::for_aspect(setting.width, job.cam->aspect_ratio);
+        render_job job                 = build();
+        const render_settings settings = with_flags(job.settings);
+        const film f                   = film::for_aspect(settings.width, job.cam->aspect_ratio);
         job.cam->initialize(f);
-        render_result result = render(f, *job.cam, *job.estimator, setting);
-        // All or none: each file is written in full beside its target, and only when every one
-        // is does commit() rename them onto their targets. A failure or an interrupt before that
-        // leaves every old file as it was (output_set.h).
-        output_set files;
-        for (const auto& path : outputs) write_image(files, path, result.mean);
-        if (!variance_output.empty()) write_image(files, variance_output, result.mean_variance);
-        if (!stats_output.empty()) {
-            // Added last, so renamed last: a stats file means every image of the run is complete.
-            run_stats stats{program,
-                            std::string(job.estimator->name()),
-                            sampler_name(setting),
-                            chapter_options(),
-                            std::vector<std::string>(argv, argv + argc),
-                            f,
-                            setting,
-                            result.window,
-                            result.samples,
-                            result.rays,
-                            result.seconds,
-                            0,
-                            outputs,
-                            variance_output};
-            stats.settings.threads = result.threads;
-            stats.process_seconds =
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            write_stats(files, stats_output, stats);
-        }
-        files.commit();
-        if (!setting.quiet) print_summary(program, f, setting, result);
+        const render_result result = render_with_progress(f, job, settings);
+        write_outputs(result, [&] { return record_of(job, f, settings, result, start); });
+        if (!quiet) print_summary(program, f, settings, result);
         return 0;
     } catch (const user_error& e) {
         std::fprintf(stderr, "%s: error: %s\n", program.c_str(), e.what());

@@ -1,33 +1,25 @@
-// The command line every chapter shares (CLI11). Chapter 01.
+// The command line every chapter's program shares (CLI11), and the run it starts:
 //   chNN_name [--width N] [--spp N] [--max-depth N] [--seed N] [--threads N] [--out FILE]...
 //             [--variance-out FILE] [--stats-out FILE] [--crop X0,Y0,X1,Y1]
 //             [--samples FROM:TO] [--quiet] [--help]
-// It only parses: the scene brings its own default settings (render_job::settings) and a flag
-// the user gives overrides that one setting. A chapter may add flags of its own through app().
+// A chapter's main() names its program, adds its own flags through app() and hands run() the
+// function that builds its render job. The scene brings its own default settings
+// (render_job::settings); a flag the user gives overrides that one setting.
 #pragma once
 
 #include <CLI/CLI.hpp>
-#include <cstdint>
+#include <chrono>
 #include <functional>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "rt/program/flag_checks.h"
+#include "rt/program/run_stats.h"
 #include "rt/render/render.h"
 
 namespace rt {
-
-// Checks for a numeric flag, as CLI11 validators; the message says the rule and the value:
-// "--width: must be an integer from 1 to 16384, got 2.5". Decimal digits only, so the number
-// used is the one typed (CLI11 alone reads "0x10" as 16, calls 2.5 "not in range 1 to 16384",
-// and turns a --seed of -1 into 2^64 - 1).
-CLI::Validator integer_in(std::uint64_t lo, std::uint64_t hi);
-// [ch06 begin]
-// A finite real number >= lo ("--aperture: must be a finite number >= 0, got -1"), or > lo.
-CLI::Validator number_at_least(double lo);
-CLI::Validator number_above(double lo);
-// [ch06 end]
 
 class command_line {
   public:
@@ -36,9 +28,10 @@ class command_line {
     CLI::App& app() { return cli; }
     const std::string& name() const { return program; }
 
-    // Parses the arguments, then builds the job (so chapter flags can choose the scene), puts
-    // the flags given over the job's settings, renders and writes every output. Returns the exit
-    // code: 0 on success (or --help), 2 for a user error with one line on stderr naming it.
+    // The whole run: parse(), then build the job (so chapter flags can choose the scene), put
+    // the flags given over its settings, render with a progress line, write every output all
+    // or none, and print a summary. Returns the exit code: 0 on success (or --help), 2 for a
+    // user error with one line on stderr naming it, 1 for an internal error.
     int run(int argc, char** argv, const std::function<render_job()>& build);
 
     // run()'s first step alone: parses and checks the arguments, builds and renders nothing.
@@ -47,19 +40,38 @@ class command_line {
     std::optional<int> parse(int argc, char** argv);
 
   private:
+    using clock = std::chrono::steady_clock;
+
+    // The files a run writes: images (.png and/or .pfm; default "<name>.png"), the variance of
+    // each pixel's mean (.pfm) and the record of the run (.json), the last two optional.
+    struct output_files {
+        std::vector<std::string> images;
+        std::string variance;
+        std::string stats;
+    };
+
     // The job's settings with every flag the user gave put over them.
     render_settings with_flags(render_settings scene_defaults) const;
-
     // The chapter's own flags (those it added through app()) and their values in force.
     std::vector<std::pair<std::string, std::string>> chapter_options() const;
 
+    // The render of a job whose camera is initialized for f, with a progress line unless quiet.
+    render_result render_with_progress(const film& f, const render_job& job,
+                                       const render_settings& settings) const;
+    // What --stats-out records of a finished render.
+    run_stats record_of(const render_job& job, const film& f, const render_settings& settings,
+                        const render_result& result, clock::time_point start) const;
+    // Writes every output, all or none; the record (made when the images are written) last.
+    void write_outputs(const render_result& result,
+                       const std::function<run_stats()>& make_record) const;
+
     std::string program;
-    render_settings flags;             // the values parsed; only those given are used
-    std::vector<std::string> outputs;  // .png and/or .pfm files; default "<name>.png"
-    std::string variance_output;       // optional .pfm of the per-pixel variance of the mean
-    std::string stats_output;          // optional .json record of the run (run_stats.h)
+    render_settings flags;  // the values parsed; only those given are used
+    bool quiet = false;     // no progress line and no summary
+    output_files outputs;
     std::string crop_text;             // --crop as given, checked by the parser
     std::string samples_text;          // --samples as given, checked by the parser
+    std::vector<std::string> command;  // the arguments as given, for the record
     CLI::App cli;
     std::vector<const CLI::Option*> shared_options;  // the flags every chapter has
 };

@@ -1,24 +1,27 @@
-// Chapter 01. Progress of a long render on stderr: percent done, samples per second, time left.
-// Any thread may report a finished row; one of them prints, at most a few times a second.
+// Progress of a long render on stderr: percent done, samples per second, time left. The
+// render loop tells it of each finished row (render.h's row_observer), from any thread; one of
+// them prints, at most a few times a second.
 #pragma once
 
 #include <atomic>
 #include <chrono>
 #include <mutex>
 
+#include "rt/render/render.h"
+
 namespace rt {
 
-class progress_meter {
+class progress_meter : public row_observer {
   public:
     // total_rows rows of samples_per_row camera samples each; silent when quiet.
     progress_meter(int total_rows, double samples_per_row, bool quiet);
 
-    void row_done();  // thread-safe
-    void finish();    // clears the progress line
-    double elapsed_seconds() const;
+    void row_done() override;  // thread-safe
+    void finish();             // clears the progress line
 
   private:
     using clock = std::chrono::steady_clock;
+    double elapsed_seconds() const;
 
     int total_rows;
     double samples_per_row;

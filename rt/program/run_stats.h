@@ -1,4 +1,4 @@
-// The record of one run, for machines: --stats-out FILE.json. Chapter 01.
+// The record of one run, for machines: --stats-out FILE.json.
 // The tools (tools/benchmark, tools/render-report, tools/merge, and any later convergence
 // driver) read this file instead of the progress line on stderr, which is for people. One JSON
 // object; README.md ("Every chapter's command line") lists its keys. Written like the images,

@@ -3,10 +3,10 @@
 #include <omp.h>
 
 #include <atomic>
+#include <chrono>
 #include <string>
 
 #include "rt/core/validate.h"
-#include "rt/program/progress.h"
 #include "rt/render/ray_count.h"
 
 namespace rt {
@@ -38,7 +38,7 @@ sample_range samples_of(const render_settings& settings) {
 }
 
 render_result render(const film& f, const camera& cam, const radiance_estimator& estimator,
-                     const render_settings& settings) {
+                     const render_settings& settings, row_observer* rows) {
     const pixel_window window = window_of(f, settings);
     const sample_range range  = samples_of(settings);
     const int width = window.width(), height = window.height();
@@ -46,7 +46,7 @@ render_result render(const film& f, const camera& cam, const radiance_estimator&
     // NOLINTNEXTLINE(clang-analyzer-deadcode.DeadStores): read by the omp pragma below
     const int threads = settings.threads > 0 ? settings.threads : omp_get_num_procs();
     render_result result{image(width, height), image(width, height), 0, window, range, 0, threads};
-    progress_meter progress(height, double(width) * count, settings.quiet);
+    const auto start = std::chrono::steady_clock::now();
 
     std::atomic<std::uint64_t> rays{0};
 #pragma omp parallel num_threads(threads)
@@ -91,13 +91,13 @@ render_result render(const film& f, const camera& cam, const radiance_estimator&
                 result.mean.set(col, row, pixel_mean);
                 result.mean_variance.set(col, row, variance);
             }
-            progress.row_done();
+            if (rows) rows->row_done();
         }
         rays += rays_traced_by_this_thread - rays_before;
     }
-    progress.finish();
-    result.seconds = progress.elapsed_seconds();
-    result.rays    = rays.load();
+    result.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.rays = rays.load();
     return result;
 }
 

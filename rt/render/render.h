@@ -36,12 +36,11 @@ struct sample_range {
 
 // How to render: a scene brings its own defaults (its report settings); flags override them.
 struct render_settings {
-    int width             = 400;    // Image width in pixels; the height from the aspect ratio
-    int samples_per_pixel = 100;    // Camera samples per pixel of the whole render
-    int max_depth         = 50;     // Ray segments followed per path at most
-    std::uint64_t seed    = 1;      // Selects the random streams
-    int threads           = 0;      // 0 = all cores
-    bool quiet            = false;  // No progress on stderr
+    int width             = 400;  // Image width in pixels; the height from the aspect ratio
+    int samples_per_pixel = 100;  // Camera samples per pixel of the whole render
+    int max_depth         = 50;   // Ray segments followed per path at most
+    std::uint64_t seed    = 1;    // Selects the random streams
+    int threads           = 0;    // 0 = all cores
     // One part of a split render (none: the whole image, every sample index).
     std::optional<pixel_window> crop;     // Render only this window; the image is its size
     std::optional<sample_range> samples;  // Only these sample indices; to <= samples_per_pixel
@@ -80,8 +79,20 @@ struct render_result {
 pixel_window window_of(const film& f, const render_settings& settings);
 sample_range samples_of(const render_settings& settings);
 
+// Told of every row of the window once it is done, by whichever thread finished it, so an
+// implementation must be thread-safe; the render loop never waits for it to return quickly.
+// (The program's progress line, rt/program/progress.h, is one.)
+class row_observer {
+  public:
+    virtual void row_done() = 0;
+
+  protected:
+    ~row_observer() = default;
+};
+
 // cam must have been initialized for f. Throws user_error for a bad crop or sample range.
+// rows, if given, hears of each finished row.
 render_result render(const film& f, const camera& cam, const radiance_estimator& estimator,
-                     const render_settings& settings);
+                     const render_settings& settings, row_observer* rows = nullptr);
 
 }  // namespace rt

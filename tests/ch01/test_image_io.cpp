@@ -1,8 +1,7 @@
 // Tests for image_io.h and display_encoding.h (chapter 01): PFM round trips bit for bit and is
-// laid out as the format says (bottom row first), PNG decodes to the sRGB bytes, bad paths are
-// refused before anything is written, and a failed write never damages an existing file.
+// laid out as the format says (bottom row first), PNG decodes to the sRGB bytes, and an
+// independent reader (oiiotool) agrees with ours.
 #include <stb/stb_image.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <catch2/catch.hpp>
@@ -20,7 +19,6 @@
 #include <utility>
 #include <vector>
 
-#include "rt/core/error.h"
 #include "rt/image/display_encoding.h"
 #include "rt/image/image_io.h"
 #include "test_helpers.h"
@@ -30,25 +28,7 @@ namespace {
 namespace fs = std::filesystem;
 using rt::color, rt::real;
 
-using rt_test::read_bytes, rt_test::same_bits, rt_test::temp_folder, rt_test::write_bytes;
-
-// An image whose floats exercise every kind of value a PFM must carry: signs, -0, float
-// subnormals, the largest float, and ordinary radiance values; no two pixels alike.
-rt::image test_image(int width, int height) {
-    const float specials[] = {0.0f,  -0.0f, 1e-40f, std::numeric_limits<float>::max(),
-                              -1.5f, 1e-3f, 0.1f,   65504.0f};
-    rt::image img(width, height);
-    int n = 0;
-    for (int y = 0; y < height; ++y) {
-        for (int x = 0; x < width; ++x, ++n) {
-            float r = specials[n % 8];
-            float g = float(x) / 7.0f + float(y);
-            float b = -float(n) * 0.37f;
-            img.set(x, y, color(real(r), real(g), real(b)));
-        }
-    }
-    return img;
-}
+using rt_test::read_bytes, rt_test::same_bits, rt_test::temp_folder;
 
 }  // namespace
 
@@ -56,8 +36,8 @@ TEST_CASE("image_io: a PFM written and read back is the same image bit for bit",
     temp_folder dir("image_io", "roundtrip");
     for (auto [w, h] : {std::pair{5, 3}, std::pair{1, 1}, std::pair{1, 7}, std::pair{64, 2}}) {
         INFO(w << " x " << h);
-        rt::image img = test_image(w, h);
-        rt::write_image(dir.file("a.pfm"), img);
+        rt::image img = rt_test::varied_image(w, h);
+        rt_test::write_image_file(dir.file("a.pfm"), img);
         CHECK(same_bits(rt::read_pfm(dir.file("a.pfm")), img));
     }
 }
@@ -66,8 +46,8 @@ TEST_CASE("image_io: a PFM starts with its header and stores the bottom image ro
           "[ch01]") {
     temp_folder dir("image_io", "layout");
     const int w = 5, h = 3;
-    rt::image img = test_image(w, h);
-    rt::write_image(dir.file("a.pfm"), img);
+    rt::image img = rt_test::varied_image(w, h);
+    rt_test::write_image_file(dir.file("a.pfm"), img);
     std::string bytes = read_bytes(dir.file("a.pfm"));
 
     const std::string header = "PF\n5 3\n-1.0\n";  // -1: little-endian, as the x86 floats are
@@ -91,7 +71,7 @@ TEST_CASE("image_io: a PNG decodes to the 8-bit sRGB codes of the image", "[ch01
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
             img.set(x, y, color(real(x) / 6, real(y) / 3, x == 0 ? nan : real(x - 3)));
-    rt::write_image(dir.file("a.png"), img);
+    rt_test::write_image_file(dir.file("a.png"), img);
 
     std::string bytes = read_bytes(dir.file("a.png"));
     REQUIRE(bytes.size() > 8);
@@ -145,68 +125,6 @@ TEST_CASE("display_encoding: linear_to_srgb follows the sRGB curve and clamps to
     CHECK(rt::to_srgb8(0.5) == 188);  // 255 * 0.73536 = 187.52, rounded to nearest
 }
 
-TEST_CASE("image_io: writing into a missing folder throws and creates nothing", "[ch01]") {
-    temp_folder dir("image_io", "missing");
-    for (const char* name : {"no/such/folder/a.pfm", "no/a.png"}) {
-        INFO(name);
-        CHECK_THROWS_AS(rt::write_image(dir.file(name), test_image(2, 2)), rt::user_error);
-        CHECK_THROWS_WITH(rt::write_image(dir.file(name), test_image(2, 2)),
-                          Catch::Contains("does not exist"));
-    }
-    CHECK(dir.entries().empty());
-}
-
-TEST_CASE("image_io: an unknown extension throws and creates nothing", "[ch01]") {
-    temp_folder dir("image_io", "extension");
-    for (const char* name : {"a.jpg", "a.exr", "a", "a.pfm.txt"}) {
-        INFO(name);
-        CHECK_THROWS_AS(rt::write_image(dir.file(name), test_image(2, 2)), rt::user_error);
-        CHECK_FALSE(rt::output_path_problem(dir.file(name)).empty());
-    }
-    CHECK(dir.entries().empty());
-    CHECK(rt::output_path_problem(dir.file("a.pfm")).empty());
-    CHECK(rt::output_path_problem(dir.file("a.png")).empty());
-}
-
-TEST_CASE("image_io: an existing file is replaced on success and left intact on failure",
-          "[ch01]") {
-    temp_folder dir("image_io", "replace");
-    for (const char* name : {"out.pfm", "out.png"}) {
-        INFO(name);
-        const std::string path = dir.file(name);
-
-        // Success: the new image replaces the old file, and no temporary is left beside it.
-        write_bytes(path, "old contents");
-        rt::write_image(path, test_image(3, 2));
-        CHECK(read_bytes(path) != "old contents");
-        if (std::string(name) == "out.pfm") CHECK(same_bits(rt::read_pfm(path), test_image(3, 2)));
-        CHECK(dir.entries() == std::vector<std::string>{name});
-
-        // Failure: the temporary file cannot be created (a folder, not empty, sits where
-        // write_image puts it: path + ".tmp." + pid + ".0", see output_set.h). The write must
-        // throw, name the file and the reason, and leave the old file as it was.
-        write_bytes(path, "old contents");
-        const std::string blocker = path + ".tmp." + std::to_string(::getpid()) + ".0";
-        fs::create_directory(blocker);
-        write_bytes(blocker + "/keep", "x");
-        CHECK_THROWS_WITH(
-            rt::write_image(path, test_image(3, 2)),
-            "cannot write '" + path + "': Is a directory (creating '" + blocker + "')");
-        CHECK(read_bytes(path) == "old contents");
-        CHECK(read_bytes(blocker + "/keep") == "x");
-        fs::remove_all(blocker);
-        fs::remove(path);
-    }
-
-    // A folder where the file should go is refused, and left alone with what it holds.
-    fs::create_directory(dir.file("folder.pfm"));
-    write_bytes(dir.file("folder.pfm/inside"), "kept");
-    CHECK_THROWS_AS(rt::write_image(dir.file("folder.pfm"), test_image(3, 2)), rt::user_error);
-    CHECK(fs::is_directory(dir.file("folder.pfm")));
-    CHECK(read_bytes(dir.file("folder.pfm/inside")) == "kept");
-    CHECK(dir.entries() == std::vector<std::string>{"folder.pfm"});
-}
-
 TEST_CASE("image_io: oiiotool reads our PFM with the right size, average and orientation",
           "[ch01]") {
     if (std::system("command -v oiiotool > /dev/null 2>&1") != 0) {
@@ -221,7 +139,7 @@ TEST_CASE("image_io: oiiotool reads our PFM with the right size, average and ori
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
             img.set(x, y, color(real(x) / 8, real(y) / 4, x == 0 && y == 0 ? 0 : 1));
-    rt::write_image(dir.file("a.pfm"), img);
+    rt_test::write_image_file(dir.file("a.pfm"), img);
 
     const std::string out = dir.file("oiiotool.txt");
     const std::string command =

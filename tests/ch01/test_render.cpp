@@ -47,7 +47,6 @@ rt::render_settings small(std::uint64_t seed, int threads) {
     settings.max_depth         = 50;
     settings.seed              = seed;
     settings.threads           = threads;
-    settings.quiet             = true;
     return settings;
 }
 

@@ -420,7 +420,6 @@ TEST_CASE("instance: translating the whole world and the camera together leaves 
     settings.samples_per_pixel = 8;
     settings.max_depth         = 20;
     settings.seed              = 5;
-    settings.quiet             = true;
     const rt::film film        = rt::film::for_aspect(32, 1);
     auto render_at             = [&](const vec3* shift) {
         std::vector<rt::bounded_object> objects;

@@ -31,7 +31,6 @@ rt::render_result render_room(const room_placement& place, int spp, std::uint64_
     rt::render_settings settings = job.settings;
     settings.samples_per_pixel   = spp;
     settings.seed                = seed;
-    settings.quiet               = true;
     return rt::render(f, *job.cam, *job.estimator, settings);
 }
 

@@ -29,7 +29,7 @@ std::string write_texture(const temp_folder& folder) {
     img.set(0, 0, rt::color(0.1, 0.2, 0.8));
     img.set(1, 0, rt::color(0.1, 0.7, 0.2));
     std::string path = folder.file("texture.png");
-    rt::write_image(path, img);
+    rt_test::write_image_file(path, img);
     return path;
 }
 

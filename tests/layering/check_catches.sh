@@ -9,13 +9,14 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
 
-# The clean fixture: ch01 owns base.h/.cpp, ch02 owns extra.h and adds two lines to base.h.
+# The clean fixture: ch01 owns base.h/.cpp, ch02 owns extra.h and adds two lines to base.h, and
+# tool.h is the program's (beside the layers), included by chapter 01's program and a test.
 # Its traps: a package header, a test tag and a URL in strings, "base.h" reached from its own
 # folder, and an image.
 make_fixture() {
     local repo=$1
     mkdir -p "$repo"/{rt,chapters/ch01_first,chapters/ch02_second,tests/ch01,tests/ch02,tests/cli}
-    printf '# fixture\nch01  base.h base.cpp\nch02  extra.h\n' >"$repo/rt/layers.txt"
+    printf '# fixture\nch01  base.h base.cpp\nch02  extra.h\nprogram  tool.h\n' >"$repo/rt/layers.txt"
     cat >"$repo/rt/base.h" <<'EOF'
 // The first idea. Chapter 01.
 #pragma once
@@ -34,14 +35,18 @@ EOF
     printf '#include "base.h"\nint base_value() { return base{}.value; }\n' >"$repo/rt/base.cpp"
     printf '#pragma once\n#include "base.h"\n#include "rt/base.h"\nstruct extra { int width = 3; };\n' \
         >"$repo/rt/extra.h"
-    printf '#include "rt/base.h"\nint main() { return 0; }\n' >"$repo/chapters/ch01_first/main.cpp"
+    printf '#pragma once\n#include "rt/base.h"\nstruct tool { int runs = 1; };\n' >"$repo/rt/tool.h"
+    printf '#include "rt/base.h"\n#include "rt/tool.h"\nint main() { return 0; }\n' \
+        >"$repo/chapters/ch01_first/main.cpp"
     printf '#pragma once\n#include "rt/extra.h"\n' >"$repo/chapters/ch02_second/scene.h"
     printf '#include "rt/extra.h"\n#include "scene.h"\nint main() { return 0; }\n' \
         >"$repo/chapters/ch02_second/main.cpp"
     printf '#pragma once\n#include "rt/base.h"\n' >"$repo/tests/test_helpers.h"
-    printf '#include "test_helpers.h"\nTEST_CASE("base", "[ch02]") {}\n' >"$repo/tests/ch01/test_base.cpp"
+    printf '#include "test_helpers.h"\n#include "rt/tool.h"\nTEST_CASE("base", "[ch02]") {}\n' \
+        >"$repo/tests/ch01/test_base.cpp"
     printf '#include "test_helpers.h"\n#include "rt/extra.h"\n' >"$repo/tests/ch02/test_extra.cpp"
-    printf '\x89PNG\r\n\x1a\n\0\0' >"$repo/tests/cli/picture.png"
+    printf '\x89PNG\r\n\x1a\n\0\0' >"$repo/tests/ch01/picture.png"
+    printf '#!/bin/sh\necho the command line\n' >"$repo/tests/cli/run.sh"
 }
 
 fail() { echo "FAIL $case: $*"; failures=$((failures + 1)); }
@@ -74,7 +79,7 @@ lacks() { grep -qF -- "$1" <<<"$out" && fail "'$1' should be hidden: $out" || ec
 case_check_passes_clean_fixture() {
     run check-layers --root "$repo"
     if [ "$rc" -ne 0 ] || [ -n "$err" ]; then fail "clean fixture: exit code $rc; stderr: $err"
-    elif [ "$out" != "check-layers: 9 files, 11 includes, 4 marked lines: layering holds" ]; then
+    elif [ "$out" != "check-layers: 10 files, 14 includes, 4 marked lines: layering holds" ]; then
         fail "clean fixture: unexpected summary '$out'"
     else echo "ok $case: $out"; fi
 }
@@ -84,11 +89,11 @@ case_check_catches_early_includes_later() {
 }
 case_check_catches_chapter_main_includes_later() {
     echo '#include "rt/extra.h"' >>"$repo/chapters/ch01_first/main.cpp"
-    breach "ch01 main includes a ch02 header" 1 "chapters/ch01_first/main.cpp:3" "rt/extra.h (ch02)"
+    breach "ch01 main includes a ch02 header" 1 "chapters/ch01_first/main.cpp:4" "rt/extra.h (ch02)"
 }
 case_check_catches_test_includes_later() {
     echo '#include "rt/extra.h"' >>"$repo/tests/test_helpers.h"
-    breach "shared test helper includes a ch02 header" 1 "tests/test_helpers.h:3 (ch01)" "rt/extra.h"
+    breach "shared test helper includes a ch02 header" 1 "tests/test_helpers.h:3 (shared)" "rt/extra.h"
 }
 case_check_catches_marked_include() {
     echo '#include "extra.h"  // [ch02] only chapter 02 uses it' >>"$repo/rt/base.cpp"
@@ -122,6 +127,17 @@ case_check_catches_unlisted_library_file() {
     breach "file listed twice" 2 "base.cpp is listed twice"
     breach "listed file that does not exist" 2 "rt/ghost.h is listed" "does not exist"
 }
+case_check_catches_layer_includes_program() {
+    echo '#include "rt/tool.h"' >>"$repo/rt/base.cpp"
+    breach "chapter 01's layer includes the program" 1 "rt/base.cpp:3 (ch01)" "rt/tool.h (program)"
+    make_fixture "$repo.2" && repo=$repo.2
+    echo '#include "rt/extra.h"' >>"$repo/rt/tool.h"
+    breach "the program includes a ch02 header" 1 "rt/tool.h:4 (program)" "rt/extra.h (ch02)"
+}
+case_check_catches_marker_in_program_file() {
+    echo 'int late = 0;  // [ch02] the program belongs to no chapter' >>"$repo/rt/tool.h"
+    breach "marker in the program's file" 1 "rt/tool.h:4" "[ch02]" "no chapter"
+}
 case_chapter_diff_shows_new_file() {
     run chapter-diff ch02 --root "$repo"
     has "--- /dev/null" && has "+++ b/rt/extra.h" && has "+struct extra { int width = 3; };"
@@ -139,7 +155,8 @@ case_chapter_diff_hides_later_lines() {
     run chapter-diff ch01 --root "$repo"
     has "+++ b/rt/base.h" && has "+    int value = 1;" && has "+    int last = 3;"
     lacks "shutter" && lacks "hook" && lacks "extra"
-    has "Binary file b/tests/cli/picture.png is new" && lacks "PNG"
+    has "Binary file b/tests/ch01/picture.png is new" && lacks "PNG"
+    lacks "+++ b/rt/tool.h" && lacks "command line"  # the program's and the shared files: no chapter's
 }
 case_chapter_diff_refuses_unknown_chapter() {
     local chapter

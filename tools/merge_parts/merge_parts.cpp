@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "rt/core/error.h"
+#include "rt/files/image_outputs.h"
 #include "rt/files/output_set.h"
 #include "rt/image/image.h"
 #include "rt/image/image_io.h"

@@ -23,7 +23,7 @@ std::string signal_name(int s) {
 }  // namespace
 
 TEST_CASE("interrupt: SIGINT, SIGTERM and SIGHUP remove the guarded file, then kill by the signal",
-          "[ch01]") {
+          "[program]") {
     for (int s : {SIGINT, SIGTERM, SIGHUP}) {
         INFO("signal " << s);
         temp_folder dir("interrupt", "removes_" + std::to_string(s));
@@ -43,7 +43,7 @@ TEST_CASE("interrupt: SIGINT, SIGTERM and SIGHUP remove the guarded file, then k
 }
 
 TEST_CASE("interrupt: after the guard ends, or with no guard, an interrupt removes nothing",
-          "[ch01]") {
+          "[program]") {
     temp_folder dir("interrupt", "after");
     const std::string first = dir.file("first.tmp"), second = dir.file("second.tmp");
     const std::string ends = child_ends([&] {
@@ -60,7 +60,7 @@ TEST_CASE("interrupt: after the guard ends, or with no guard, an interrupt remov
 }
 
 TEST_CASE("interrupt: a signal ignored before the guard stays ignored (nohup, background jobs)",
-          "[ch01]") {
+          "[program]") {
     temp_folder dir("interrupt", "ignored");
     const std::string tmp  = dir.file("out.pfm.tmp.1");
     const std::string ends = child_ends([&] {
@@ -74,7 +74,7 @@ TEST_CASE("interrupt: a signal ignored before the guard stays ignored (nohup, ba
     CHECK(std::filesystem::exists(tmp));  // not interrupted, so nothing to clean up
 }
 
-TEST_CASE("interrupt: one signal removes every guarded file", "[ch01]") {
+TEST_CASE("interrupt: one signal removes every guarded file", "[program]") {
     temp_folder dir("interrupt", "several");
     std::vector<std::string> files;
     for (int i = 0; i < 5; ++i) files.push_back(dir.file("out" + std::to_string(i) + ".tmp"));
@@ -90,7 +90,8 @@ TEST_CASE("interrupt: one signal removes every guarded file", "[ch01]") {
     CHECK(dir.entries() == std::vector<std::string>{"not_guarded.tmp"});
 }
 
-TEST_CASE("interrupt: the table holds max_removed_on_interrupt guards, one more throws", "[ch01]") {
+TEST_CASE("interrupt: the table holds max_removed_on_interrupt guards, one more throws",
+          "[program]") {
     temp_folder dir("interrupt", "table");
     {
         std::vector<rt::removed_on_interrupt> guards;
@@ -107,7 +108,7 @@ TEST_CASE("interrupt: the table holds max_removed_on_interrupt guards, one more 
 }
 
 TEST_CASE("interrupt: while interrupts are held a signal waits, end() then removes and dies",
-          "[ch01]") {
+          "[program]") {
     for (int s : {SIGINT, SIGTERM, SIGHUP}) {
         INFO("signal " << s);
         temp_folder dir("interrupt", "held_" + std::to_string(s));
@@ -128,7 +129,7 @@ TEST_CASE("interrupt: while interrupts are held a signal waits, end() then remov
 }
 
 TEST_CASE("interrupt: a hold that saw no signal ends quietly, signals act at once again",
-          "[ch01]") {
+          "[program]") {
     temp_folder dir("interrupt", "held_quiet");
     const std::string tmp  = dir.file("out.pfm.tmp.1");
     const std::string ends = child_ends([&] {

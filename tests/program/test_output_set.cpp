@@ -30,7 +30,7 @@ std::function<void(rt::temporary_file&)> bytes(const std::string& text) {
 }  // namespace
 
 TEST_CASE("output_set: nothing reaches a target before commit(), which renames every file",
-          "[ch01]") {
+          "[program]") {
     temp_folder dir("output_set", "commit");
     const std::string a = dir.file("a.png"), b = dir.file("b.pfm"), c = dir.file("c.json");
     write_bytes(a, "old a");
@@ -63,7 +63,7 @@ TEST_CASE("output_set: nothing reaches a target before commit(), which renames e
 }
 
 TEST_CASE("output_set: a set dropped without commit() changes nothing and leaves nothing",
-          "[ch01]") {
+          "[program]") {
     temp_folder dir("output_set", "dropped");
     write_bytes(dir.file("a.png"), "old a");
     {
@@ -79,7 +79,7 @@ TEST_CASE("output_set: a set dropped without commit() changes nothing and leaves
 TEST_CASE(
     "output_set: a file that cannot be created is refused by name and reason, and the "
     "files written before it never reach their targets",
-    "[ch01]") {
+    "[program]") {
     temp_folder dir("output_set", "cannot_create");
     const std::string a = dir.file("a.png"), b = dir.file("missing/b.png");
     write_bytes(a, "old a");
@@ -96,7 +96,7 @@ TEST_CASE(
     CHECK(dir.entries() == std::vector<std::string>{"a.png"});
 }
 
-TEST_CASE("output_set: a writer that throws leaves no temporary file", "[ch01]") {
+TEST_CASE("output_set: a writer that throws leaves no temporary file", "[program]") {
     temp_folder dir("output_set", "writer_throws");
     rt::output_set set;
     set.add(dir.file("a.png"), bytes("new a"));
@@ -109,7 +109,7 @@ TEST_CASE("output_set: a writer that throws leaves no temporary file", "[ch01]")
     CHECK(dir.entries().size() == 1);  // a.png's temporary file alone
 }
 
-TEST_CASE("output_set: a write cut short (a full disk) is refused with its reason", "[ch01]") {
+TEST_CASE("output_set: a write cut short (a full disk) is refused with its reason", "[program]") {
     temp_folder dir("output_set", "cut_short");
     const std::string a = dir.file("a.png"), b = dir.file("b.pfm");
     write_bytes(a, "old a");
@@ -136,7 +136,7 @@ TEST_CASE("output_set: a write cut short (a full disk) is refused with its reaso
     CHECK(dir.entries() == std::vector<std::string>{"a.png", "b.pfm"});
 }
 
-TEST_CASE("output_set: a rename that fails in commit() undoes the renames before it", "[ch01]") {
+TEST_CASE("output_set: a rename that fails in commit() undoes the renames before it", "[program]") {
     temp_folder dir("output_set", "rename_fails");
     const std::string a = dir.file("a.png"), b = dir.file("b.pfm"), c = dir.file("c.json");
     write_bytes(a, "old a");  // b does not exist
@@ -159,7 +159,7 @@ TEST_CASE("output_set: a rename that fails in commit() undoes the renames before
     CHECK(dir.entries() == std::vector<std::string>{"a.png", "c.json"});
 }
 
-TEST_CASE("output_set: the same path given twice ends with the later file", "[ch01]") {
+TEST_CASE("output_set: the same path given twice ends with the later file", "[program]") {
     temp_folder dir("output_set", "twice");
     const std::string a = dir.file("a.pfm");
     write_bytes(a, "old");
@@ -171,7 +171,7 @@ TEST_CASE("output_set: the same path given twice ends with the later file", "[ch
     CHECK(dir.entries() == std::vector<std::string>{"a.pfm"});
 }
 
-TEST_CASE("output_set: at most max_files files, one more is refused", "[ch01]") {
+TEST_CASE("output_set: at most max_files files, one more is refused", "[program]") {
     temp_folder dir("output_set", "too_many");
     {
         rt::output_set set;
@@ -187,7 +187,7 @@ TEST_CASE("output_set: at most max_files files, one more is refused", "[ch01]") 
 TEST_CASE(
     "output_set: an interrupt while the second file is written keeps both old files and "
     "leaves no temporary file",
-    "[ch01]") {
+    "[program]") {
     for (int s : {SIGINT, SIGTERM, SIGHUP}) {
         INFO("signal " << s);
         temp_folder dir("output_set", "interrupt_" + std::to_string(s));
@@ -210,7 +210,7 @@ TEST_CASE(
     }
 }
 
-TEST_CASE("output_set: after commit() an interrupt removes nothing", "[ch01]") {
+TEST_CASE("output_set: after commit() an interrupt removes nothing", "[program]") {
     temp_folder dir("output_set", "interrupt_after");
     const std::string a = dir.file("a.png"), b = dir.file("b.pfm");
     const std::string ends = child_ends([&] {
