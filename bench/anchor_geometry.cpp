@@ -2,6 +2,7 @@
 
 #include "ch06_defocus/random_spheres.h"
 #include "ch11_instances/cornell_box.h"
+#include "rt/core/rng.h"
 #include "rt/geometry/box.h"
 #include "rt/geometry/instance.h"
 #include "rt/materials/lambertian.h"

@@ -4,6 +4,7 @@
 
 #include "ch06_defocus/random_spheres.h"
 #include "rt/core/onb.h"
+#include "rt/samplers/independent_sampler.h"
 #include "rt/samplers/sampling.h"
 #include "single_precision.h"
 
@@ -36,7 +37,7 @@ std::vector<rt::ray> camera_rays(const rt::camera& cam, const rt::film& f, int s
                                  std::uint64_t seed) {
     std::vector<rt::ray> rays;
     rays.reserve(std::size_t(f.width) * std::size_t(f.height) * std::size_t(samples_per_pixel));
-    rt::sampler s(seed);
+    rt::independent_sampler s(seed);
     for (int j = 0; j < f.height; ++j) {
         for (int i = 0; i < f.width; ++i) {
             for (int k = 0; k < samples_per_pixel; ++k) {

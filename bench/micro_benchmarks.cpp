@@ -15,7 +15,7 @@
 #include "rt/geometry/quad.h"
 #include "rt/geometry/sphere.h"
 #include "rt/materials/lambertian.h"
-#include "rt/samplers/sampler.h"
+#include "rt/samplers/independent_sampler.h"
 
 namespace {
 
@@ -178,7 +178,7 @@ void pcg32_uniform(benchmark::State& state) {
 }
 
 void sampler_next_2d(benchmark::State& state) {
-    rt::sampler s(seed);
+    rt::independent_sampler s(seed);
     s.start_pixel_sample(17, 42, 3);
     for (auto _ : state) benchmark::DoNotOptimize(s.next_2d());
     state.SetItemsProcessed(std::int64_t(state.iterations()));
@@ -187,7 +187,7 @@ void sampler_next_2d(benchmark::State& state) {
 // Selecting a pixel sample's stream: a hash and a jump ahead of sample_index * 65536 steps,
 // paid once per camera sample.
 void sampler_start_pixel_sample(benchmark::State& state) {
-    rt::sampler s(seed);
+    rt::independent_sampler s(seed);
     int i = 0;
     for (auto _ : state) {
         s.start_pixel_sample(i & 511, (i >> 9) & 511, i & 1023);

@@ -26,7 +26,7 @@
 #include "rt/core/vec3.h"
 #include "rt/image/image.h"
 #include "rt/image/image_io.h"
-#include "rt/samplers/sampler.h"
+#include "rt/samplers/independent_sampler.h"
 
 namespace rt_test {
 
@@ -84,7 +84,7 @@ inline bool exactly(const rt::vec3& a, const rt::vec3& b) {
 // The number a sampler started at pixel sample (px, py, k) returns after `draws` numbers: what a
 // part that draws exactly `draws` dimensions leaves for the next part (sampler.h's layout).
 inline rt::real next_after_draws(std::uint64_t seed, int px, int py, int k, int draws) {
-    rt::sampler s(seed);
+    rt::independent_sampler s(seed);
     s.start_pixel_sample(px, py, k);
     for (int i = 0; i < draws; ++i) s.next_1d();
     return s.next_1d();

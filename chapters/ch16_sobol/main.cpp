@@ -7,7 +7,6 @@
 // place (sampler.h: the camera's draws, then 8 per segment), so draw j of segment k is always
 // the same kind of number and its points stay evenly spread.
 // --sampler independent for comparison; --integrator and --scene as in chapter 15.
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -18,12 +17,6 @@
 #include "rt/integrators/path_tracer.h"
 #include "rt/program/command_line.h"
 #include "rt/samplers/sobol_sampler.h"
-
-namespace {
-std::unique_ptr<rt::sampler> make_sobol(std::uint64_t seed) {
-    return std::make_unique<rt::sobol_sampler>(seed);
-}
-}  // namespace
 
 int main(int argc, char** argv) {
     rt::command_line cli("ch16_sobol");
@@ -49,7 +42,7 @@ int main(int argc, char** argv) {
     return cli.run(argc, argv, [&] {
         rt::scene scene =
             which == "ch14" ? book3_cornell_box() : scene_by_name(which, texture_file);
-        if (samples == "sobol") scene.settings.make_sampler = make_sobol;
+        if (samples == "sobol") scene.settings.make_sampler = rt::sobol_sampler::make;
         if (integrator == "mis") return rt::mis_trace(scene);
         return integrator == "light" ? rt::mixture_trace(scene) : rt::path_trace(scene);
     });

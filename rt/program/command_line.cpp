@@ -43,10 +43,9 @@ bool same_file(const std::string& a, const std::string& b) {
     return resolved(a) == resolved(b);
 }
 
-// The name of the sampler the settings choose (chapter 01's independent one unless a later
-// chapter's program chose another).
+// The name of the sampler the settings choose.
 std::string sampler_name(const render_settings& s) {
-    return s.make_sampler ? s.make_sampler(s.seed)->name() : sampler(s.seed).name();
+    return s.make_sampler(s.seed)->name();
 }
 
 }  // namespace

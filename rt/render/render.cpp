@@ -57,13 +57,9 @@ render_result render(const film& f, const camera& cam, const radiance_estimator&
         // Dynamic scheduling: rows through glass cost more than rows of sky.
 #pragma omp for schedule(dynamic, 1)
         for (int row = 0; row < height; ++row) {
-            const int j = window.y0 + row;
-            sampler independent(settings.seed);
-            // [ch16 begin]
-            std::unique_ptr<sampler> chosen;
-            if (settings.make_sampler) chosen = settings.make_sampler(settings.seed);
-            // [ch16 end]
-            sampler& s = chosen ? *chosen : independent;  // [ch16]
+            const int j                            = window.y0 + row;
+            const std::unique_ptr<sampler> numbers = settings.make_sampler(settings.seed);
+            sampler& s                             = *numbers;
             for (int col = 0; col < width; ++col) {
                 const int i = window.x0 + col;
                 // Welford's running mean and sum of squared deviations m2, in double: the order

@@ -15,6 +15,7 @@
 #include "rt/image/image.h"
 #include "rt/integrators/estimator.h"
 #include "rt/render/film.h"
+#include "rt/samplers/independent_sampler.h"
 
 namespace rt {
 
@@ -44,11 +45,9 @@ struct render_settings {
     // One part of a split render (none: the whole image, every sample index).
     std::optional<pixel_window> crop;     // Render only this window; the image is its size
     std::optional<sample_range> samples;  // Only these sample indices; to <= samples_per_pixel
-    // [ch16 begin]
-    // Where pixel samples take their numbers: null is chapter 01's independent sampler; chapter
-    // 16 offers Sobol' points (sobol_sampler.h).
-    std::unique_ptr<sampler> (*make_sampler)(std::uint64_t seed) = nullptr;
-    // [ch16 end]
+    // Where pixel samples take their numbers: chapter 01's independent PCG32 streams, unless
+    // a program chooses another (chapter 16's Sobol' points).
+    sampler_factory make_sampler = independent_sampler::make;
 };
 
 // Everything a chapter's program renders: how the camera looks, how a sample is estimated, and

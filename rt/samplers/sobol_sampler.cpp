@@ -2,6 +2,8 @@
 
 #include <limits>
 
+#include "rt/core/rng.h"
+
 namespace rt {
 
 namespace {
@@ -74,7 +76,7 @@ real to_unit(std::uint32_t bits) {
 }  // namespace
 
 sobol_sampler::sobol_sampler(std::uint64_t render_seed)
-    : sampler(render_seed), seed_key(mix_bits(render_seed ^ 0x50b01u)) {}
+    : seed_key(mix_bits(render_seed ^ 0x50b01u)) {}
 
 void sobol_sampler::start_pixel_sample(int px, int py, int sample_index) {
     auto pixel     = (std::uint64_t(std::uint32_t(px)) << 32u) | std::uint32_t(py);

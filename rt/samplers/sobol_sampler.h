@@ -18,14 +18,18 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 
 #include "rt/samplers/sampler.h"
 
 namespace rt {
 
-class sobol_sampler : public sampler {
+class sobol_sampler final : public sampler {
   public:
     explicit sobol_sampler(std::uint64_t render_seed);
+    static std::unique_ptr<sampler> make(std::uint64_t render_seed) {
+        return std::make_unique<sobol_sampler>(render_seed);
+    }
 
     void start_pixel_sample(int px, int py, int sample_index) override;
     real next_1d() override;

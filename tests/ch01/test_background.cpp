@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "rt/core/rng.h"
-#include "rt/samplers/sampler.h"
+#include "rt/samplers/independent_sampler.h"
 #include "rt/scene/background.h"
 #include "test_helpers.h"
 
@@ -87,7 +87,7 @@ TEST_CASE("background: sky_only sees the background along every ray and draws no
         const point3 origin = rt_test::random_in_cube(rng, 100);
         const real length   = 1 + 10 * rng.uniform();
         const vec3 d        = length * rt_test::random_unit(rng);
-        rt::sampler s(5);
+        rt::independent_sampler s(5);
         s.start_pixel_sample(k, 0, 0);
         // Only the direction matters (nothing to hit), whatever the origin and the depth.
         const color L = estimator.radiance(rt::ray(origin, d), s, 1 + k % 3);

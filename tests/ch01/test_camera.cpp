@@ -13,6 +13,7 @@
 #include "rt/camera/camera.h"
 #include "rt/core/error.h"
 #include "rt/render/film.h"
+#include "rt/samplers/independent_sampler.h"
 #include "test_helpers.h"
 
 using Catch::Matchers::Contains;
@@ -35,9 +36,9 @@ struct traced {
 };
 
 traced trace(const rt::camera& cam, int i, int j, int sample_index, std::uint64_t seed = 1) {
-    rt::sampler s(seed);
+    rt::independent_sampler s(seed);
     s.start_pixel_sample(i, j, sample_index);
-    rt::sampler replay = s;
+    rt::independent_sampler replay = s;
     return {cam.get_ray(i, j, s), replay.next_2d()};
 }
 
@@ -124,7 +125,7 @@ TEST_CASE("camera: get_ray draws exactly 2 sampler dimensions, the jitter", "[ca
     int wrong = 0;
     for (int k = 0; k < 1000; ++k) {
         const int i = (k * 37) % 400, j = (k * 11) % 225;
-        rt::sampler s(3);
+        rt::independent_sampler s(3);
         s.start_pixel_sample(i, j, k);
         cam.get_ray(i, j, s);
         if (s.next_1d() != rt_test::next_after_draws(3, i, j, k, 2)) ++wrong;

@@ -13,6 +13,7 @@
 #include "rt/integrators/estimator.h"
 #include "rt/render/film.h"
 #include "rt/render/render.h"
+#include "rt/samplers/independent_sampler.h"
 #include "rt/scene/background.h"
 #include "test_helpers.h"
 
@@ -116,7 +117,7 @@ TEST_CASE("render: a pixel's mean and variance are those of its own samples", "[
     const noisy_sky estimator;
     auto settings = small(3, 2);
     auto result   = rt::render(view.f, view.cam, estimator, settings);
-    rt::sampler s(settings.seed);
+    rt::independent_sampler s(settings.seed);
     for (auto [i, j] : {std::pair{24, 13}, std::pair{3, 25}}) {
         const int spp = settings.samples_per_pixel;
         std::vector<color> samples;

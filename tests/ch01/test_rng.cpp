@@ -1,5 +1,6 @@
-// pcg32 and the sampler (rt/core/rng.h, rt/samplers/sampler.h): reproducible streams, jump-ahead, and a
-// stream per pixel sample that does not depend on what was drawn before. Chapter 01.
+// pcg32 and the independent sampler (rt/core/rng.h, rt/samplers/independent_sampler.h):
+// reproducible streams, jump-ahead, and a stream per pixel sample that does not depend on what was
+// drawn before. Chapter 01.
 #include <catch2/catch.hpp>
 #include <cstdint>
 #include <set>
@@ -7,7 +8,7 @@
 #include <vector>
 
 #include "rt/core/rng.h"
-#include "rt/samplers/sampler.h"
+#include "rt/samplers/independent_sampler.h"
 #include "statistics.h"
 
 using rt::pcg32;
@@ -104,7 +105,7 @@ TEST_CASE("rng: a stride's jump raised to a power is the jump of the product", "
     }
     pcg32 stepped(5, 6), powered(5, 6);
     for (int i = 0; i < 3 * 65536; ++i) stepped.next_u32();
-    powered.apply(pcg32::repeated(rt::sampler::sample_stride, 3));
+    powered.apply(pcg32::repeated(rt::independent_sampler::sample_stride, 3));
     CHECK(same_outputs(stepped, powered, 8));
 }
 
@@ -137,7 +138,8 @@ TEST_CASE("rng: jump_of is Brown's jump-ahead, the pixel samples' positions unch
         const pcg32::jump j = pcg32::jump_of(delta);
         CAPTURE(state, inc, delta);
         CHECK(j.mult * state + j.plus * inc == brown(state, inc, delta));
-        const pcg32::jump s = pcg32::repeated(rt::sampler::sample_stride, std::uint64_t(i));
+        const pcg32::jump s =
+            pcg32::repeated(rt::independent_sampler::sample_stride, std::uint64_t(i));
         CHECK(s.mult * state + s.plus * inc == brown(state, inc, std::uint64_t(i) * 65536));
     }
 }
@@ -213,7 +215,7 @@ std::vector<real> draw(rt::sampler& s, int px, int py, int sample_index, int cou
 }  // namespace
 
 TEST_CASE("sampler: the same pixel sample and seed give the same numbers", "[sampler][ch01]") {
-    rt::sampler a(7), b(7);
+    rt::independent_sampler a(7), b(7);
     CHECK(draw(a, 3, 4, 5, 16) == draw(b, 3, 4, 5, 16));
     // next_2d is next_1d twice, u first.
     a.start_pixel_sample(3, 4, 5);
@@ -226,10 +228,10 @@ TEST_CASE("sampler: the same pixel sample and seed give the same numbers", "[sam
 TEST_CASE("sampler: a pixel sample's stream does not depend on what was drawn before",
           "[sampler][ch01]") {
     // This is what makes the image independent of the thread schedule and of cropping.
-    rt::sampler fresh(42);
+    rt::independent_sampler fresh(42);
     const std::vector<real> reference = draw(fresh, 10, 20, 3, 32);
 
-    rt::sampler used(42);
+    rt::independent_sampler used(42);
     draw(used, 11, 20, 3, 100);
     draw(used, 10, 20, 2, 7);
     draw(used, 10, 20, 4, 1);
@@ -241,9 +243,10 @@ TEST_CASE("sampler: a pixel sample's stream does not depend on what was drawn be
 }
 
 TEST_CASE("sampler: sample k + 1 starts where sample k's 65536 dimensions end", "[sampler][ch01]") {
-    rt::sampler s(5);
-    const std::vector<real> first = draw(s, 1, 2, 0, int(rt::sampler::dimensions_per_sample) + 8);
-    const std::vector<real> next  = draw(s, 1, 2, 1, 8);
+    rt::independent_sampler s(5);
+    const std::vector<real> first =
+        draw(s, 1, 2, 0, int(rt::independent_sampler::dimensions_per_sample) + 8);
+    const std::vector<real> next = draw(s, 1, 2, 1, 8);
     CHECK(std::vector<real>(first.end() - 8, first.end()) == next);
 }
 
@@ -255,7 +258,7 @@ TEST_CASE("sampler: different pixels, samples and seeds give different numbers",
     std::set<std::pair<real, real>> seen;
     int streams = 0;
     for (std::uint64_t seed : {0ull, 1ull}) {
-        rt::sampler s(seed);
+        rt::independent_sampler s(seed);
         for (int py = 0; py < 32; ++py) {
             for (int px = 0; px < 32; ++px) {
                 for (int k = 0; k < 4; ++k) {
@@ -268,7 +271,7 @@ TEST_CASE("sampler: different pixels, samples and seeds give different numbers",
     }
     CHECK(int(seen.size()) == streams);
     // Swapping the coordinates is a different pixel.
-    rt::sampler s(0);
+    rt::independent_sampler s(0);
     CHECK(draw(s, 3, 5, 0, 4) != draw(s, 5, 3, 0, 4));
 }
 
@@ -279,7 +282,7 @@ TEST_CASE("sampler: first numbers are uniform across pixels and across seeds", "
     const std::vector<double> expected(bins, double(streams) / bins);
 
     std::vector<double> by_pixel(bins, 0);
-    rt::sampler s(0);
+    rt::independent_sampler s(0);
     for (int py = 0; py < 256; ++py) {
         for (int px = 0; px < 256; ++px) {
             s.start_pixel_sample(px, py, 0);
@@ -292,7 +295,7 @@ TEST_CASE("sampler: first numbers are uniform across pixels and across seeds", "
 
     std::vector<double> by_seed(bins, 0);
     for (int seed = 0; seed < streams; ++seed) {
-        rt::sampler per_seed((std::uint64_t(seed)));
+        rt::independent_sampler per_seed((std::uint64_t(seed)));
         per_seed.start_pixel_sample(0, 0, 0);
         by_seed[std::size_t(per_seed.next_1d() * bins)] += 1;
     }

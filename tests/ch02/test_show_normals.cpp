@@ -1,6 +1,6 @@
-// show_normals (rt/integrators/show_normals.h): chapter 02's way of seeing a scene. Each sample shows
-// the unit outward normal n of the nearest hit as the color 0.5 (n + 1), whichever side the ray
-// comes from, and the sky where nothing is hit; it draws nothing from the sampler. Chapter 02.
+// show_normals (rt/integrators/show_normals.h): chapter 02's way of seeing a scene. Each sample
+// shows the unit outward normal n of the nearest hit as the color 0.5 (n + 1), whichever side the
+// ray comes from, and the sky where nothing is hit; it draws nothing from the sampler. Chapter 02.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
@@ -10,6 +10,7 @@
 #include "rt/core/error.h"
 #include "rt/geometry/sphere.h"
 #include "rt/integrators/show_normals.h"
+#include "rt/samplers/independent_sampler.h"
 #include "rt/scene/background.h"
 #include "rt/scene/hittable_list.h"
 #include "rt/scene/scene.h"
@@ -24,7 +25,7 @@ using rt_test::exactly;
 const rt::background sky = rt::background::sky();
 
 rt::color shown(const rt::radiance_estimator& estimator, const rt::ray& r) {
-    rt::sampler s(1);
+    rt::independent_sampler s(1);
     s.start_pixel_sample(0, 0, 0);
     return estimator.radiance(r, s, 50);
 }
@@ -106,7 +107,7 @@ TEST_CASE("show_normals: the estimator draws no sampler dimension", "[ch02]") {
     int drew = 0, hits = 0;
     for (int k = 0; k < 1000; ++k) {
         const vec3 d = rt::unit_vector(vec3(0, 0, -1) + real(0.8) * rt_test::random_unit(rng));
-        rt::sampler s(9);
+        rt::independent_sampler s(9);
         s.start_pixel_sample(k, 1, 0);
         const color L = normals.radiance(rt::ray(point3(0, 0, 0), d), s, 50);
         hits += !exactly(L, sky.radiance(d));
@@ -130,7 +131,7 @@ TEST_CASE("show_normals: the job shows the scene's world through its camera and 
     CHECK(job.settings.samples_per_pixel == 7);
     CHECK(job.settings.seed == 99);
     REQUIRE(job.estimator != nullptr);
-    rt::sampler s(1);
+    rt::independent_sampler s(1);
     s.start_pixel_sample(0, 0, 0);
     // The sphere's front pole, and a miss that sees the scene's own sky.
     CHECK(exactly(job.estimator->radiance(rt::ray(point3(0, 0, 0), vec3(0, 0, -1)), s, 50),

@@ -12,7 +12,7 @@
 #include "rt/geometry/hittable.h"
 #include "rt/integrators/path_tracer.h"
 #include "rt/render/film.h"
-#include "rt/samplers/sampler.h"
+#include "rt/samplers/independent_sampler.h"
 #include "rt/scene/background.h"
 #include "statistics.h"
 
@@ -38,7 +38,7 @@ inline furnace_result run_furnace(const std::shared_ptr<rt::hittable>& world, in
     const rt::path_tracer tracer(world, rt::background::uniform(rt::color(1, 1, 1)));
 
     furnace_result result;
-    rt::sampler s(1234);
+    rt::independent_sampler s(1234);
     for (int j = 0; j < f.height; ++j) {
         for (int i = 0; i < f.width; ++i) {
             for (int k = 0; k < 32; ++k) {

@@ -14,6 +14,7 @@
 #include "rt/core/error.h"
 #include "rt/core/rng.h"
 #include "rt/materials/lambertian.h"
+#include "rt/samplers/independent_sampler.h"
 #include "statistics.h"
 #include "test_helpers.h"
 
@@ -28,7 +29,7 @@ using rt_test::exactly, rt_test::hit_at, rt_test::random_unit;
 TEST_CASE("lambertian: scattered directions lie in the hemisphere of the normal", "[ch03]") {
     rt::lambertian mat(color(0.5, 0.5, 0.5));
     rt::pcg32 rng(3, 4);
-    rt::sampler s(17);
+    rt::independent_sampler s(17);
     // The poles and the axes are where an orthonormal basis is most easily built wrong.
     vec3 normals[8] = {vec3(0, 0, 1), vec3(0, 0, -1), vec3(1, 0, 0), vec3(0, -1, 0)};
     for (int i = 4; i < 8; ++i) normals[i] = random_unit(rng);
@@ -62,7 +63,7 @@ TEST_CASE("lambertian: the mean cosine to the normal is 2/3, as for density cos(
     // uniform hemisphere (E[cos] = 1/2) would sit 220 standard errors away.
     rt::lambertian mat(color(0.5, 0.5, 0.5));
     const vec3 n = rt::unit_vector(vec3(0.3, -0.8, 0.52));
-    rt::sampler s(5);
+    rt::independent_sampler s(5);
     rt_test::running_mean cosines;
     int absorbed = 0;
     for (int k = 0; k < 100000; ++k) {
@@ -81,7 +82,7 @@ TEST_CASE("lambertian: the mean cosine to the normal is 2/3, as for density cos(
 }
 
 TEST_CASE("lambertian: the attenuation is exactly the albedo", "[ch03]") {
-    rt::sampler s(9);
+    rt::independent_sampler s(9);
     for (const color& albedo : {color(0.6, 0.6, 0.6), color(0.1, 0.2, 0.5), color(0, 1, 0.3)}) {
         rt::lambertian mat(albedo);
         for (int k = 0; k < 100; ++k) {
@@ -127,7 +128,7 @@ TEST_CASE("lambertian: scatter draws exactly 2 sampler dimensions, as scatter_di
         const vec3 n = random_unit(rng);
         auto rec     = hit_at(point3(-1, 0, 2), n, true);
         const rt::ray r_in(point3(-1, 0, 2) + n, -n);
-        rt::sampler s(21), copy(21);
+        rt::independent_sampler s(21), copy(21);
         s.start_pixel_sample(k, 0, 0);
         copy.start_pixel_sample(k, 0, 0);
         color attenuation;

@@ -22,6 +22,7 @@
 #include "rt/integrators/path_tracer.h"
 #include "rt/materials/lambertian.h"
 #include "rt/render/film.h"
+#include "rt/samplers/independent_sampler.h"
 #include "rt/scene/hittable_list.h"
 #include "rt/scene/scene.h"
 #include "test_helpers.h"
@@ -77,7 +78,7 @@ std::ostream& operator<<(std::ostream& out, const path_check& c) {
 path_check trace_every_pixel(const furnace& sc, int max_depth, const color& expect_on,
                              const color& expect_off) {
     path_check c;
-    rt::sampler s(42);
+    rt::independent_sampler s(42);
     for (int j = 0; j < sc.f.height; ++j) {
         for (int i = 0; i < sc.f.width; ++i) {
             for (int k = 0; k < 40; ++k) {
@@ -179,7 +180,7 @@ TEST_CASE("path_tracer: at max_depth 1 a Lambertian hit returns 0, a miss the ba
     CHECK(c.wrong_off == 0);
 
     // And max_depth 0 follows no segment at all.
-    rt::sampler s(1);
+    rt::independent_sampler s(1);
     s.start_pixel_sample(0, 0, 0);
     CHECK(
         exactly(sc.tracer.radiance(rt::ray(point3(0, 0, 4), vec3(0, 1, 0)), s, 0), color(0, 0, 0)));
@@ -188,7 +189,7 @@ TEST_CASE("path_tracer: at max_depth 1 a Lambertian hit returns 0, a miss the ba
 TEST_CASE("path_tracer: an absorbed path returns what it gathered before, here nothing", "[ch03]") {
     auto world = std::make_shared<rt::sphere>(point3(0, 0, -3), 1, std::make_shared<absorber>());
     const rt::path_tracer tracer(world, rt::background::uniform(color(1, 1, 1)));
-    rt::sampler s(1);
+    rt::independent_sampler s(1);
     s.start_pixel_sample(0, 0, 0);
     CHECK(
         exactly(tracer.radiance(rt::ray(point3(0, 0, 0), vec3(0, 0, -1)), s, 50), color(0, 0, 0)));
@@ -204,7 +205,7 @@ TEST_CASE("path_tracer: a path draws only what its materials draw, 2 per Lambert
     const rt::path_tracer tracer(floor, rt::background::uniform(color(1, 1, 1)));
     int wrong_value = 0, drew_wrong = 0;
     for (int k = 0; k < 1000; ++k) {
-        rt::sampler s(77);
+        rt::independent_sampler s(77);
         s.start_pixel_sample(3, 4, k);
         color L = tracer.radiance(rt::ray(point3(0, 1, 0), vec3(0.25, -1, 0.5)), s, 2);
         wrong_value += !exactly(L, albedo);  // one bounce, then the sky: 2 segments
@@ -214,7 +215,7 @@ TEST_CASE("path_tracer: a path draws only what its materials draw, 2 per Lambert
     CHECK(drew_wrong == 0);
 
     // A miss draws nothing.
-    rt::sampler s(77);
+    rt::independent_sampler s(77);
     s.start_pixel_sample(3, 4, 0);
     CHECK(exactly(tracer.radiance(rt::ray(point3(0, 1, 0), vec3(0, 1, 0)), s, 2), color(1, 1, 1)));
     CHECK(s.next_1d() == rt_test::next_after_draws(77, 3, 4, 0, 0));
@@ -232,7 +233,7 @@ TEST_CASE("path_tracer: the job path traces the scene's world through its camera
     CHECK(job.settings.max_depth == 3);
     CHECK(job.settings.samples_per_pixel == 5);
     REQUIRE(job.estimator != nullptr);
-    rt::sampler s(1);
+    rt::independent_sampler s(1);
     s.start_pixel_sample(0, 0, 0);
     // A miss sees the scene's own sky; a hit off the sphere's pole sees albedo * sky.
     CHECK(exactly(job.estimator->radiance(rt::ray(point3(0, 0, 0), vec3(0, 1, 0)), s, 3),

@@ -10,6 +10,7 @@
 #include "rt/geometry/sphere.h"
 #include "rt/materials/metal.h"
 #include "rt/materials/optics.h"
+#include "rt/samplers/independent_sampler.h"
 #include "test_helpers.h"
 
 using rt::color, rt::point3, rt::real, rt::vec3;
@@ -30,7 +31,7 @@ TEST_CASE("metal: fuzz 0 is a perfect mirror weighted by the albedo", "[ch04]") 
     auto mirror = std::make_shared<rt::metal>(color(0.9, 0.5, 0.1), 0);
     rt::ray in(point3(-2, 2, 0), vec3(1, -1, 0));
     auto rec = hit_unit_sphere(mirror, in);
-    rt::sampler s(3);
+    rt::independent_sampler s(3);
     s.start_pixel_sample(0, 0, 0);
     color attenuation;
     rt::ray out;
@@ -49,7 +50,7 @@ TEST_CASE("metal: fuzzed rays never leave below the surface", "[ch04]") {
     // A grazing ray: many fuzzed directions point into the surface and must be absorbed.
     rt::ray in(point3(-3, 0.999, 0), vec3(1, 0, 0));
     auto rec = hit_unit_sphere(brushed, in);
-    rt::sampler s(5);
+    rt::independent_sampler s(5);
     int absorbed = 0;
     for (int k = 0; k < 10000; ++k) {
         s.start_pixel_sample(0, 0, k);
@@ -72,7 +73,7 @@ TEST_CASE("metal: scatter draws exactly 3 sampler dimensions, even as a perfect 
         auto mat = std::make_shared<rt::metal>(color(0.5, 0.5, 0.5), fuzz);
         auto rec = hit_unit_sphere(mat, in);
         for (int k = 0; k < 100; ++k) {
-            rt::sampler s(8);
+            rt::independent_sampler s(8);
             s.start_pixel_sample(k, 0, 0);
             color attenuation;
             rt::ray out;

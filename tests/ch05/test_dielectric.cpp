@@ -11,6 +11,7 @@
 #include "rt/geometry/sphere.h"
 #include "rt/materials/dielectric.h"
 #include "rt/materials/optics.h"
+#include "rt/samplers/independent_sampler.h"
 #include "test_helpers.h"
 
 using rt::color, rt::point3, rt::real, rt::vec3;
@@ -33,7 +34,7 @@ TEST_CASE("dielectric: head-on rays mostly refract, with probability 1 - R0", "[
         auto glass = std::make_shared<rt::dielectric>(1.5, model);
         rt::ray in(point3(0, 0, 5), vec3(0, 0, -1));
         auto rec = hit_unit_sphere(glass, in);
-        rt::sampler s(11);
+        rt::independent_sampler s(11);
         const int n   = 100000;
         int reflected = 0, not_clear = 0;
         for (int k = 0; k < n; ++k) {
@@ -65,7 +66,7 @@ TEST_CASE("dielectric: an oblique ray reflects with the model's probability", "[
         const double p   = double(model == rt::fresnel_model::exact
                                       ? rt::fresnel_reflectance(cos_i, 1 / real(1.5))
                                       : rt::schlick_reflectance(cos_i, 1 / real(1.5)));
-        rt::sampler s(12);
+        rt::independent_sampler s(12);
         const int n   = 400000;
         int reflected = 0;
         for (int k = 0; k < n; ++k) {
@@ -102,7 +103,7 @@ TEST_CASE("dielectric: total internal reflection inside glass reflects, no NaN",
         rt::ray in(target - dir * 0.5, dir);
         auto rec = hit_unit_sphere(glass, in);
         REQUIRE_FALSE(rec.front_face);
-        rt::sampler s(2);
+        rt::independent_sampler s(2);
         for (int k = 0; k < 1000; ++k) {
             s.start_pixel_sample(0, 0, k);
             color attenuation;
@@ -125,7 +126,7 @@ TEST_CASE("dielectric: scatter draws exactly 1 sampler dimension", "[ch05]") {
     for (const rt::ray& in : rays) {
         auto rec = hit_unit_sphere(glass, in);
         for (int k = 0; k < 100; ++k) {
-            rt::sampler s(4);
+            rt::independent_sampler s(4);
             s.start_pixel_sample(k, 0, 0);
             color attenuation;
             rt::ray out;

@@ -14,6 +14,7 @@
 #include "rt/camera/thin_lens_camera.h"
 #include "rt/core/error.h"
 #include "rt/render/film.h"
+#include "rt/samplers/independent_sampler.h"
 #include "rt/samplers/sampling.h"
 #include "test_helpers.h"
 
@@ -38,9 +39,9 @@ struct traced {
 };
 
 traced trace(const rt::camera& cam, int i, int j, int sample_index, std::uint64_t seed = 1) {
-    rt::sampler s(seed);
+    rt::independent_sampler s(seed);
     s.start_pixel_sample(i, j, sample_index);
-    rt::sampler replay = s;
+    rt::independent_sampler replay = s;
     traced t{cam.get_ray(i, j, s), replay.next_2d(), {0, 0}};
     t.lens = replay.next_2d();
     return t;
@@ -232,7 +233,7 @@ TEST_CASE("thin_lens_camera: aperture 0 draws 2 sampler dimensions, aperture > 0
     int wrong_pinhole = 0, wrong_lens = 0;
     for (int k = 0; k < 1000; ++k) {
         const int i = (k * 37) % 400, j = (k * 11) % 225;
-        rt::sampler a(3), b(3);
+        rt::independent_sampler a(3), b(3);
         a.start_pixel_sample(i, j, k);
         b.start_pixel_sample(i, j, k);
         pinhole.get_ray(i, j, a);
@@ -263,7 +264,7 @@ TEST_CASE(
     int differ = 0;
     for (int k = 0; k < 1000; ++k) {
         const int i = (k * 37) % 400, j = (k * 11) % 225;
-        rt::sampler a(3), b(3);
+        rt::independent_sampler a(3), b(3);
         a.start_pixel_sample(i, j, k);
         b.start_pixel_sample(i, j, k);
         const rt::ray ra = first.get_ray(i, j, a), rb = thin_lens.get_ray(i, j, b);

@@ -13,6 +13,7 @@
 #include "rt/accel/bounded.h"
 #include "rt/accel/bvh.h"
 #include "rt/core/error.h"
+#include "rt/core/rng.h"
 #include "rt/geometry/moving_sphere.h"
 #include "rt/geometry/quad.h"
 #include "rt/geometry/sphere.h"

@@ -6,7 +6,7 @@
 #include "rt/camera/thin_lens_camera.h"
 #include "rt/core/ray.h"
 #include "rt/materials/lambertian.h"
-#include "rt/samplers/sampler.h"
+#include "rt/samplers/independent_sampler.h"
 #include "test_helpers.h"
 
 TEST_CASE("ray: the instant defaults to 0 and continued() carries it", "[ray][ch07]") {
@@ -25,7 +25,7 @@ TEST_CASE("ray: a scattered ray keeps the instant of the ray that arrived", "[ra
     rt::lambertian matte(rt::color(0.5, 0.5, 0.5));
     rt::hit_record rec = rt_test::hit_at(rt::point3(0, 0, 0), rt::vec3(0, 1, 0), true);
     const rt::ray arriving(rt::point3(0, 1, 0), rt::vec3(0, -1, 0), rt::real(0.75));
-    rt::sampler s(1);
+    rt::independent_sampler s(1);
     s.start_pixel_sample(0, 0, 0);
     rt::color attenuation;
     rt::ray scattered;
@@ -37,7 +37,7 @@ TEST_CASE("thin_lens_camera: with the shutter closed, rays are at instant 0 and 
           "[camera][ch07]") {
     rt::thin_lens_camera cam;
     cam.initialize(rt::film::for_aspect(64, 16.0 / 9));
-    rt::sampler s(3), fresh(3);
+    rt::independent_sampler s(3), fresh(3);
     s.start_pixel_sample(5, 7, 11);
     fresh.start_pixel_sample(5, 7, 11);
     const rt::ray r = cam.get_ray(5, 7, s);

@@ -14,6 +14,7 @@
 #include "rt/camera/thin_lens_camera.h"
 #include "rt/core/error.h"
 #include "rt/render/film.h"
+#include "rt/samplers/independent_sampler.h"
 #include "test_helpers.h"
 
 using rt_test::book_film;
@@ -34,9 +35,9 @@ struct traced {
 
 traced trace(const rt::thin_lens_camera& cam, int i, int j, int sample_index,
              std::uint64_t seed = 1) {
-    rt::sampler s(seed);
+    rt::independent_sampler s(seed);
     s.start_pixel_sample(i, j, sample_index);
-    rt::sampler replay = s;
+    rt::independent_sampler replay = s;
     traced t{cam.get_ray(i, j, s), 0, 0};
     replay.next_2d();                        // the jitter
     if (cam.aperture > 0) replay.next_2d();  // the lens position

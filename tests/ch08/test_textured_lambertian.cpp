@@ -13,6 +13,7 @@
 #include "rt/geometry/quad.h"
 #include "rt/materials/lambertian.h"
 #include "rt/materials/textured_lambertian.h"
+#include "rt/samplers/independent_sampler.h"
 #include "rt/textures/texture.h"
 #include "test_helpers.h"
 
@@ -42,7 +43,7 @@ TEST_CASE("textured_lambertian: the attenuation is the texture's value at (u, v,
     // two coordinates, so a record naming this quad can be given any (u, v).
     const rt::quad surface(point3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0), any_material());
     rt::pcg32 rng(5, 6);
-    rt::sampler s(13);
+    rt::independent_sampler s(13);
     int wrong = 0, other_ray = 0;
     for (int k = 0; k < 1000; ++k) {
         real x = rng.uniform(), y = rng.uniform();
@@ -54,7 +55,7 @@ TEST_CASE("textured_lambertian: the attenuation is the texture's value at (u, v,
         rec.local  = vec3(u, v, 0);
         const rt::ray r_in(p + n, -n, 0.5);
         s.start_pixel_sample(k, 3, 0);
-        rt::sampler same = s;
+        rt::independent_sampler same = s;
         color attenuation, plain_attenuation;
         rt::ray scattered, plain_scattered;
         REQUIRE(mat.scatter(r_in, rec, s, attenuation, scattered));

@@ -18,6 +18,7 @@
 #include "rt/materials/diffuse_light.h"
 #include "rt/materials/metal.h"
 #include "rt/render/film.h"
+#include "rt/samplers/independent_sampler.h"
 #include "rt/scene/hittable_list.h"
 #include "rt/scene/scene.h"
 #include "rt/textures/texture.h"
@@ -68,7 +69,7 @@ view_check trace_view(const rt::scene& sc, int max_depth, const color& expected)
     const rt::film f         = rt::film::for_aspect(job.settings.width, job.cam->aspect_ratio);
     job.cam->initialize(f);
     view_check c;
-    rt::sampler s(7);
+    rt::independent_sampler s(7);
     for (int j = 0; j < f.height; ++j) {
         for (int i = 0; i < f.width; ++i) {
             for (int k = 0; k < 4; ++k) {
@@ -134,7 +135,7 @@ TEST_CASE("diffuse_light: a light never scatters, so a bright background adds no
 
     // And asked directly, from either side, it absorbs and still emits.
     rt::diffuse_light light(radiance);
-    rt::sampler s(1);
+    rt::independent_sampler s(1);
     s.start_pixel_sample(0, 0, 0);
     auto quad = light_quad(radiance);
     for (real z : {real(2), real(-2)}) {
@@ -159,7 +160,7 @@ TEST_CASE("diffuse_light: with max_depth 1 the light is still seen (emission at 
     // max_depth 0 follows no segment, so it sees nothing at all.
     auto sc = looking_at_light(point3(0, 0, 3), color(0, 0, 0));
     const rt::path_tracer tracer(sc.world, sc.sky);
-    rt::sampler s(1);
+    rt::independent_sampler s(1);
     s.start_pixel_sample(0, 0, 0);
     CHECK(exactly(tracer.radiance(rt::ray(point3(0, 0, 3), vec3(0, 0, -1)), s, 0), color()));
 }
@@ -175,7 +176,7 @@ TEST_CASE("diffuse_light: emission is added at every hit, weighted by the path's
     world->add(std::make_shared<rt::quad>(point3(-5, 2, -5), vec3(0, 0, 10), vec3(10, 0, 0),
                                           std::make_shared<rt::diffuse_light>(radiance)));
     const rt::path_tracer tracer(world, rt::background::uniform(color(0, 0, 0)));
-    rt::sampler s(3);
+    rt::independent_sampler s(3);
     s.start_pixel_sample(0, 0, 0);
     const rt::ray down(point3(0.25, 1, -0.5), vec3(0, -1, 0));
     CHECK(exactly(tracer.radiance(down, s, 50), color(2, 1, 0.5)));
@@ -194,7 +195,7 @@ TEST_CASE("diffuse_light: a textured light emits its texture's value at the hit'
     auto world = std::make_shared<rt::hittable_list>();
     world->add(std::make_shared<rt::quad>(quad));
     const rt::path_tracer tracer(world, rt::background::uniform(color(0, 0, 0)));
-    rt::sampler s(4);
+    rt::independent_sampler s(4);
     for (const auto& [a, b] : {std::pair<real, real>(0.25, 0.75), {0.5, 0.125}, {0.875, 0.5}}) {
         for (real z : {real(3), real(-3)}) {
             CAPTURE(a, b, z);

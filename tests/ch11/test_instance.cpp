@@ -32,6 +32,7 @@
 #include "rt/materials/textured_lambertian.h"
 #include "rt/render/film.h"
 #include "rt/render/render.h"
+#include "rt/samplers/independent_sampler.h"
 #include "rt/textures/texture.h"
 #include "test_helpers.h"
 
@@ -491,7 +492,7 @@ TEST_CASE("instance: a textured sphere turned and moved keeps the (u, v) of its 
     auto ball         = std::make_shared<rt::sphere>(c, radius, mat);
     const vec3 offset(7.25, -3.5, 10.125);
     rt::pcg32 rng(27, 0);
-    rt::sampler s(27);
+    rt::independent_sampler s(27);
     int hits = 0, not_own = 0, elsewhere = 0, wrong_color = 0, world_differs = 0, turned = 0;
     for (axis about : all_axes) {
         for (real deg : listed_angles) {

@@ -35,6 +35,7 @@
 #include "rt/integrators/path_tracer.h"
 #include "rt/media/constant_medium.h"
 #include "rt/render/film.h"
+#include "rt/samplers/independent_sampler.h"
 #include "rt/scene/hittable_list.h"
 #include "statistics.h"
 #include "test_helpers.h"
@@ -447,7 +448,7 @@ TEST_CASE("constant_medium: one medium placed twice (two translates) attenuates 
     for (const auto& world : {placed, separate}) {
         INFO((world == placed ? "one medium, two translates" : "two media"));
         const rt::path_tracer tracer(world, rt::background::uniform(color(1, 1, 1)));
-        rt::sampler s(9);
+        rt::independent_sampler s(9);
         rt::pcg32 rng(7, 0);
         const int n      = 100000;
         long long passed = 0;
@@ -497,7 +498,7 @@ TEST_CASE("constant_medium: furnace, a white medium sphere returns exactly 1 on 
 
     rt_test::running_mean paths;
     long long not_one = 0, scattered = 0;
-    rt::sampler s(12);
+    rt::independent_sampler s(12);
     for (int j = 0; j < 40; ++j) {
         for (int i = 0; i < 40; ++i) {
             for (int k = 0; k < 16; ++k) {
@@ -534,7 +535,7 @@ TEST_CASE("constant_medium: black smoke transmits exp(-density * chord) through 
     world->add(std::make_shared<rt::constant_medium>(
         std::make_shared<rt::sphere>(point3(0, 0, 0), 1, any_material()), 0.5, color(0, 0, 0)));
     const rt::path_tracer tracer(world, rt::background::uniform(color(1, 1, 1)));
-    rt::sampler s(13);
+    rt::independent_sampler s(13);
     rt::pcg32 rng(8, 0);
     rt_test::running_mean paths;
     long long other = 0;

@@ -11,6 +11,7 @@
 #include "rt/core/error.h"
 #include "rt/core/rng.h"
 #include "rt/media/isotropic.h"
+#include "rt/samplers/independent_sampler.h"
 #include "rt/samplers/sampling.h"
 #include "statistics.h"
 #include "test_helpers.h"
@@ -29,7 +30,7 @@ TEST_CASE("isotropic: scattered directions are uniform on the sphere, weighted b
           "[ch12]") {
     const color albedo(0.25, 0.5, 0.75);
     rt::isotropic phase(albedo);
-    rt::sampler s(10);
+    rt::independent_sampler s(10);
     rt::pcg32 incoming(11, 0);
     // 10 bins of z = cos(theta) (equal areas, by Archimedes) times 20 of the azimuth: under the
     // uniform sphere each bin expects n / 200.
@@ -46,7 +47,7 @@ TEST_CASE("isotropic: scattered directions are uniform on the sphere, weighted b
         rec.p = point3(1, -2, 3);
         color attenuation;
         rt::ray out;
-        rt::sampler replay = s;
+        rt::independent_sampler replay = s;
         if (!phase.scatter(r_in, rec, s, attenuation, out)) {
             ++wrong;
             continue;

@@ -13,6 +13,7 @@
 #include "rt/integrators/path_tracer.h"
 #include "rt/materials/lambertian.h"
 #include "rt/media/constant_medium.h"
+#include "rt/samplers/independent_sampler.h"
 #include "rt/scene/hittable_list.h"
 #include "test_helpers.h"
 
@@ -52,12 +53,12 @@ TEST_CASE(
     clear->add(floor);
     const auto sky = rt::background::uniform(color(1, 1, 1));
     const rt::path_tracer through_haze(hazy, sky), in_clear_air(clear, sky);
-    rt::sampler s(77);
+    rt::independent_sampler s(77);
     int not_albedo = 0, not_clear = 0, same_rays = 0, same_numbers = 0, misplaced = 0;
     for (int k = 0; k < 1000; ++k) {
         s.start_pixel_sample(3, 4, k);
-        rt::sampler expected = s;  // replays the draws the path should make
-        rt::sampler clear_s  = s;
+        rt::independent_sampler expected = s;  // replays the draws the path should make
+        rt::independent_sampler clear_s  = s;
         expected.next_2d();  // the Lambertian bounce, and nothing else
         recorder->rays.clear();
         const rt::ray camera_ray(point3(0, 1, 0), vec3(0.25, -1, 0.5));

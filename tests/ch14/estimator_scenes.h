@@ -37,6 +37,7 @@
 #include "rt/materials/lambertian.h"
 #include "rt/materials/metal.h"
 #include "rt/media/constant_medium.h"
+#include "rt/samplers/independent_sampler.h"
 #include "rt/scene/background.h"
 #include "rt/scene/hittable_list.h"
 #include "statistics.h"
@@ -204,7 +205,7 @@ struct run {
 inline run estimate(const rt::radiance_estimator& est, const test_scene& sc, int n,
                     std::uint64_t seed) {
     run result;
-    rt::sampler s(seed);
+    rt::independent_sampler s(seed);
     rt::pcg32 aim(seed, 99);
     for (int k = 0; k < n; ++k) {
         s.start_pixel_sample(0, 0, k);

@@ -20,6 +20,7 @@
 #include "rt/materials/metal.h"
 #include "rt/materials/textured_lambertian.h"
 #include "rt/media/isotropic.h"
+#include "rt/samplers/independent_sampler.h"
 #include "rt/textures/texture.h"
 #include "test_helpers.h"
 
@@ -82,7 +83,7 @@ TEST_CASE("evaluable materials: the sampled weight is eval / pdf of the directio
     for (const auto& m : evaluable_materials()) {
         INFO(m.name);
         REQUIRE(m.mat->evaluable());
-        rt::sampler s(61);
+        rt::independent_sampler s(61);
         int wrong = 0, no_density = 0, n = 0;
         for (const rt::hit_record& rec : hits()) {
             const rt::ray r_in = incoming(rec);
@@ -121,7 +122,7 @@ TEST_CASE("evaluable materials: directions follow pdf(), which integrates to 1 o
             // Whole sphere, about the normal: a diffuse direction below the surface falls
             // where pdf() is 0 and fails the test outright.
             const direction_bins bins(rec.normal, 2, 10, 12);
-            rt::sampler s(sequence);
+            rt::independent_sampler s(sequence);
             int k     = 0;
             auto draw = [&](rt::pcg32&, vec3& wi, real& pdf) {
                 s.start_pixel_sample(k++, 0, 0);
@@ -147,7 +148,7 @@ TEST_CASE("evaluable materials: eval is f |cos|, and a diffuse surface sends not
         for (const rt::hit_record& rec : hits()) {
             const rt::ray r_in = incoming(rec);
             // The albedo the material reports through scatter() at this hit.
-            rt::sampler s(3);
+            rt::independent_sampler s(3);
             s.start_pixel_sample(0, 0, 0);
             color albedo;
             rt::ray scattered;

@@ -9,6 +9,7 @@
 #include "ch14/estimator_scenes.h"
 #include "rt/integrators/mixture_tracer.h"
 #include "rt/integrators/path_tracer.h"
+#include "rt/samplers/independent_sampler.h"
 
 namespace {
 
@@ -44,7 +45,7 @@ TEST_CASE("mixture_tracer: is named \"light\", and a scene without lights is pat
     world->add(floor_quad());
     const rt::mixture_tracer dark(world, rt::background::uniform(rt::color(0, 0, 0)));
     CHECK(dark.name() == "light");
-    rt::sampler s(5);
+    rt::independent_sampler s(5);
     int lit = 0;
     for (int k = 0; k < 100; ++k) {
         s.start_pixel_sample(0, 0, k);

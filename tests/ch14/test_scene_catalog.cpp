@@ -15,7 +15,7 @@
 #include "rt/image/image.h"
 #include "rt/image/image_io.h"
 #include "rt/render/film.h"
-#include "rt/samplers/sampler.h"
+#include "rt/samplers/independent_sampler.h"
 #include "rt/scene/hittable_list.h"
 #include "test_helpers.h"
 
@@ -71,7 +71,7 @@ TEST_CASE("scene_catalog: every name builds a scene whose camera sees its world"
         // scene's settings, and the world answers it (a hit or the sky, never a crash).
         const rt::film f = rt::film::for_aspect(32, scene.cam->aspect_ratio);
         scene.cam->initialize(f);
-        rt::sampler s(1);
+        rt::independent_sampler s(1);
         s.start_pixel_sample(f.width / 2, f.height / 2, 0);
         const rt::ray r = scene.cam->get_ray(f.width / 2, f.height / 2, s);
         rt::hit_record rec;

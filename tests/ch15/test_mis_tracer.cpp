@@ -13,6 +13,7 @@
 #include "rt/integrators/mis_tracer.h"
 #include "rt/integrators/mixture_tracer.h"
 #include "rt/integrators/path_tracer.h"
+#include "rt/samplers/independent_sampler.h"
 
 namespace {
 
@@ -76,7 +77,7 @@ TEST_CASE("mis_tracer: is named \"mis\", and a scene without lights is path trac
     world->add(floor_quad());
     const rt::mis_tracer dark(world, rt::background::uniform(rt::color(0, 0, 0)));
     CHECK(dark.name() == "mis");
-    rt::sampler s(5);
+    rt::independent_sampler s(5);
     int lit = 0;
     for (int k = 0; k < 100; ++k) {
         s.start_pixel_sample(0, 0, k);

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "rt/samplers/sampler.h"
+#include "rt/samplers/independent_sampler.h"
 #include "rt/samplers/sobol_sampler.h"
 #include "statistics.h"
 
@@ -112,7 +112,7 @@ TEST_CASE("sobol: scrambled and shuffled, every pixel's first 2^m samples are st
 }
 
 TEST_CASE("sobol: independent samples are not a net, so the net test can fail", "[ch16]") {
-    rt::sampler s(7);
+    rt::independent_sampler s(7);
     auto points   = points_of(s, 3, 4, 1 << 6, 0);
     int good_grid = 0;
     for (int a = 0; a <= 6; ++a) good_grid += one_point_per_cell(points, a, 6 - a);
@@ -186,7 +186,7 @@ TEST_CASE("sobol: segment k's draws do not depend on what earlier segments drew"
 
 TEST_CASE("sobol: the independent sampler ignores the layout, so earlier images stay the same",
           "[ch16]") {
-    rt::sampler a(1), b(1);
+    rt::independent_sampler a(1), b(1);
     a.start_pixel_sample(4, 4, 9);
     b.start_pixel_sample(4, 4, 9);
     a.next_2d();
