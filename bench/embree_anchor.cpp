@@ -34,7 +34,7 @@
 #include "ch13_final/final_scene.h"
 #include "embree_scene.h"
 #include "recorded_rays.h"
-#include "rt/accel/bvh.h"
+#include "rt/accel/wide_bvh.h"
 #include "rt/integrators/path_tracer.h"
 #include "single_precision.h"
 

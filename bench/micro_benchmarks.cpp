@@ -10,7 +10,7 @@
 
 #include "book1_rays.h"
 #include "rt/accel/aabb.h"
-#include "rt/accel/bvh.h"
+#include "rt/accel/wide_bvh.h"
 #include "rt/core/rng.h"
 #include "rt/geometry/quad.h"
 #include "rt/geometry/sphere.h"

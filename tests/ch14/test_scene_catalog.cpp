@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "ch14_importance_sampling/scene_catalog.h"
-#include "rt/accel/bvh.h"
+#include "rt/accel/wide_bvh.h"
 #include "rt/core/error.h"
 #include "rt/core/interval.h"
 #include "rt/image/image.h"

@@ -1,4 +1,4 @@
-#include "rt/accel/bvh.h"
+#include "rt/accel/wide_bvh.h"
 
 #include <algorithm>
 #include <array>
