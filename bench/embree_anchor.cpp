@@ -34,6 +34,7 @@
 #include "ch13_final/final_scene.h"
 #include "embree_scene.h"
 #include "recorded_rays.h"
+#include "rt/accel/fast_traversal.h"
 #include "rt/accel/wide_bvh.h"
 #include "rt/integrators/path_tracer.h"
 #include "single_precision.h"
@@ -48,7 +49,7 @@ constexpr std::uint64_t seed = 2024;
 struct both_tracers {
     const anchor_geometry& geometry;
     std::vector<rt::bounded_object> objects = geometry.objects();
-    rt::bvh ours{objects};
+    rt::wide_bvh ours{objects};
     rt_bench::embree_scene embree{geometry};
     std::unordered_map<const rt::hittable*, std::int32_t> shape_of;
 
@@ -232,7 +233,7 @@ rt::scene bouncing_spheres_at_time_0() {
     cam->focus_dist = 10;
     cam->aperture   = 2 * cam->focus_dist * std::tan(rt::degrees_to_radians(0.01));
     rt::scene sc;
-    sc.world    = std::make_shared<rt::bvh>(rt_bench::book1_objects());
+    sc.world    = std::make_shared<rt::wide_bvh>(rt_bench::book1_objects());
     sc.sky      = rt::background::uniform(rt::color(0.70, 0.80, 1.00));
     sc.cam      = cam;
     sc.settings = {.width = 400, .samples_per_pixel = 1, .max_depth = 50};
@@ -241,7 +242,7 @@ rt::scene bouncing_spheres_at_time_0() {
 
 // Book 2's final scene (ch13) at time 0, at issue 11's depth.
 rt::scene book2_final_at_time_0() {
-    rt::scene sc = book2_final_scene(RT_ASSET_DIR "/globe.png");
+    rt::scene sc = rt::with_fast_traversal(book2_final_scene(RT_ASSET_DIR "/globe.png"));
     std::dynamic_pointer_cast<rt::thin_lens_camera>(sc.cam)->shutter_close = 0;
     sc.settings.max_depth                                                  = 40;
     return sc;
@@ -249,7 +250,7 @@ rt::scene book2_final_at_time_0() {
 
 // Book 2's Cornell box (ch11) at issue 11's settings.
 rt::scene cornell_box_at_issue_settings() {
-    rt::scene sc          = cornell_box();
+    rt::scene sc          = rt::with_fast_traversal(cornell_box());
     sc.settings.width     = 200;
     sc.settings.max_depth = 50;
     return sc;

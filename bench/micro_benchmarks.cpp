@@ -131,7 +131,7 @@ const std::vector<rt::bounded_object>& book1() {
 void bvh_build(benchmark::State& state) {
     std::size_t nodes = 0;
     for (auto _ : state) {
-        rt::bvh tree(book1());
+        rt::wide_bvh tree(book1());
         nodes = tree.node_count();
         benchmark::DoNotOptimize(nodes);
     }
@@ -142,7 +142,7 @@ void bvh_build(benchmark::State& state) {
 
 // The BVH of book 1's final scene and its rays: one camera ray per pixel of the 400 x 225 image.
 struct book1_traversal {
-    rt::bvh tree{book1()};
+    rt::wide_bvh tree{book1()};
     std::vector<rt::ray> camera;
     std::vector<rt::ray> bounce;
 

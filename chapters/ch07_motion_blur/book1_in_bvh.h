@@ -11,7 +11,7 @@
 #include "ch06_defocus/lens_scenes.h"
 #include "ch06_defocus/random_spheres.h"
 #include "rt/accel/bounded.h"
-#include "rt/accel/wide_bvh.h"
+#include "rt/accel/bvh.h"
 #include "rt/scene/scene.h"
 
 inline rt::scene book1_final_scene_in_bvh(bool use_bvh) {

@@ -9,7 +9,7 @@
 
 #include "ch06_defocus/random_spheres.h"
 #include "rt/accel/bounded.h"
-#include "rt/accel/wide_bvh.h"
+#include "rt/accel/bvh.h"
 #include "rt/camera/thin_lens_camera.h"
 #include "rt/core/rng.h"
 #include "rt/geometry/moving_sphere.h"

@@ -9,7 +9,7 @@
 #include <memory>
 #include <vector>
 
-#include "rt/accel/wide_bvh.h"
+#include "rt/accel/bvh.h"
 #include "rt/camera/thin_lens_camera.h"
 #include "rt/geometry/box.h"
 #include "rt/geometry/instance.h"

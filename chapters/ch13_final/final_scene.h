@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include "rt/accel/wide_bvh.h"
+#include "rt/accel/bvh.h"
 #include "rt/camera/thin_lens_camera.h"
 #include "rt/core/rng.h"
 #include "rt/geometry/box.h"

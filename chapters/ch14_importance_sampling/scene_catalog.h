@@ -17,6 +17,7 @@
 #include "ch04_metal/metal_scene.h"
 #include "ch05_dielectric/glass_scene.h"
 #include "ch06_defocus/lens_scenes.h"
+#include "ch07_motion_blur/book1_in_bvh.h"
 #include "ch07_motion_blur/bouncing_spheres.h"
 #include "ch08_textures/checker_scene.h"
 #include "ch08_textures/globe_scene.h"
@@ -50,6 +51,8 @@ inline std::span<const catalog_scene> catalog_scenes() {
          [](const std::string&) { return book1_final_scene(std::nullopt, std::nullopt); }},
         {"ch07", [](const std::string&) { return bouncing_spheres(/*use_bvh=*/true); }},
         {"ch07-list", [](const std::string&) { return bouncing_spheres(/*use_bvh=*/false); }},
+        {"ch07-ch06-final",
+         [](const std::string&) { return book1_final_scene_in_bvh(/*use_bvh=*/true); }},
         {"ch08", [](const std::string& texture) { return globe(texture); }},
         {"ch08-checker", [](const std::string&) { return checkered_spheres(); }},
         {"ch09",

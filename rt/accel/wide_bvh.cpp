@@ -4,235 +4,58 @@
 #include <array>
 #include <bit>
 #include <limits>
-#include <stdexcept>
-#include <string>
-#include <typeinfo>
 
 namespace rt {
 
-namespace {
-
-constexpr int bin_count           = 12;  // SAH candidates per axis; more buys little
-constexpr int max_leaf_objects    = 4;
-constexpr real traversal_cost     = 1;   // relative to one object test
-constexpr int max_traversal_depth = 64;  // stack size: above what build() can make
-constexpr int max_sah_depth       = 40;  // below it, median splits: at most log2(n) more levels
-
-}  // namespace
-
-// The binary tree as build() makes it, depth first: a node's first child follows it, its second
-// child is at `offset`. pack() then turns it into the nodes and leaves that traversal reads.
-struct bvh::build_node {
-    aabb box;
-    std::uint32_t offset;  // leaf: index of its first item; interior: its second child
-    std::uint16_t count;   // items in a leaf; 0 for an interior node
-    std::uint8_t axis;     // interior: the split axis
-};
-
-struct bvh::build_item {
-    aabb box;
-    point3 centroid;
-    std::uint32_t object;
-};
-
-namespace {
-
-// The depth of the binary tree (an iterative walk, so a deep tree cannot overflow the stack).
-template <typename Node>
-int depth_of(const std::vector<Node>& tree) {
-    int deepest = 0;
-    std::vector<std::pair<std::uint32_t, int>> pending;
-    if (!tree.empty()) pending.push_back({0, 1});
-    while (!pending.empty()) {
-        auto [index, level] = pending.back();
-        pending.pop_back();
-        deepest = std::max(deepest, level);
-        if (tree[index].count == 0) {
-            pending.push_back({index + 1, level + 1});
-            pending.push_back({tree[index].offset, level + 1});
-        }
-    }
-    return deepest;
+wide_bvh::wide_bvh(const bvh& tree, const object_map& map,
+                   const std::vector<leaf_shapes_maker>& extra_kinds) {
+    for (const auto& make : extra_kinds) extras.push_back(make());
+    for (const auto& object : tree.objects()) objects.push_back(map ? map(object) : object);
+    for (const auto& object : objects) leaf_objects.push_back(object.get());
+    if (tree.nodes().empty()) return;
+    box  = tree.nodes()[0].box;
+    root = pack(tree, 0);
 }
 
-}  // namespace
+wide_bvh::wide_bvh(const std::vector<bounded_object>& input) : wide_bvh(bvh(input)) {}
 
-bvh::bvh(const std::vector<bounded_object>& input) {
-    std::vector<build_item> items(input.size());
-    for (std::size_t i = 0; i < input.size(); ++i) {
-        const aabb& b = input[i].box;
-        items[i]      = {b, b.centroid(), std::uint32_t(i)};
-    }
-    std::vector<build_node> tree;
-    tree.reserve(2 * input.size());
-    if (!items.empty()) build(tree, items, 0, items.size(), 1);
-
-    // Traversal keeps pending siblings on a fixed stack: the tree must fit it (build() bounds the
-    // depth by about 40 + log2(n), so this can only fail beyond ~2^23 pathological objects).
-    levels        = depth_of(tree);
-    boxes_in_tree = tree.size();
-    if (levels > max_traversal_depth)
-        throw std::logic_error("bvh: tree depth " + std::to_string(levels) + " exceeds the stack");
-    if (tree.empty()) return;
-
-    box  = tree[0].box;
-    root = pack(tree, 0, input, items);
-}
-
-std::uint32_t bvh::build(std::vector<build_node>& tree, std::vector<build_item>& items,
-                         std::size_t begin, std::size_t end, int level) {
-    const auto index = std::uint32_t(tree.size());
-    tree.push_back({});
-    aabb bounds, centroid_bounds;
-    for (std::size_t i = begin; i < end; ++i) {
-        bounds          = aabb(bounds, items[i].box);
-        centroid_bounds = aabb(centroid_bounds, aabb(items[i].centroid, items[i].centroid));
-    }
-    const std::size_t count = end - begin;
-    auto make_leaf          = [&] {
-        tree[index] = {bounds, std::uint32_t(begin), std::uint16_t(count), 0};
-        return index;
-    };
-    if (count <= 1) return make_leaf();
-
-    // Bin the centroids along the axis where they spread most.
-    const int axis        = centroid_bounds.longest_axis();
-    const interval extent = centroid_bounds.axis_interval(axis);
-    if (!(extent.size() > 0)) {
-        // All centroids coincide: no split can separate them; halve by index if too many.
-        if (count <= max_leaf_objects) return make_leaf();
-        std::size_t mid = begin + count / 2;
-        build(tree, items, begin, mid, level + 1);
-        const std::uint32_t second = build(tree, items, mid, end, level + 1);
-        tree[index]                = {bounds, second, 0, std::uint8_t(axis)};
-        return index;
-    }
-    auto bin_of = [&](const build_item& item) {
-        // The comparison also sends NaN (an infinite extent) to bin 0.
-        real f = (item.centroid[axis] - extent.min) / extent.size();
-        return f > 0 ? std::min(int(std::min(f, real(1)) * bin_count), bin_count - 1) : 0;
-    };
-    std::array<aabb, bin_count> bin_box;
-    std::array<std::size_t, bin_count> bin_objects{};
-    for (std::size_t i = begin; i < end; ++i) {
-        int b      = bin_of(items[i]);
-        bin_box[b] = aabb(bin_box[b], items[i].box);
-        ++bin_objects[b];
-    }
-
-    // Sweep from the right to know each suffix's box, then from the left to price each split.
-    std::array<real, bin_count> right_area{};
-    std::array<std::size_t, bin_count> right_count{};
-    aabb right;
-    std::size_t right_n = 0;
-    for (int b = bin_count - 1; b > 0; --b) {
-        right = aabb(right, bin_box[b]);
-        right_n += bin_objects[b];
-        right_area[b]  = right.half_area();
-        right_count[b] = right_n;
-    }
-    // Boxes may have zero thickness (quads in a coordinate plane), so a parent may have zero
-    // area (all its boxes points, or points on one line): then every cost is 0 / 0 = NaN, no
-    // split beats infinity, and the node becomes a leaf or is split at the median below.
-    aabb left;
-    std::size_t left_n     = 0;
-    real best_cost         = infinity;
-    int best_split         = 1;  // objects in bins < best_split go left
-    const real parent_area = bounds.half_area();
-    for (int b = 1; b < bin_count; ++b) {
-        left = aabb(left, bin_box[b - 1]);
-        left_n += bin_objects[b - 1];
-        if (left_n == 0 || right_count[b] == 0) continue;
-        real cost =
-            traversal_cost +
-            (left.half_area() * real(left_n) + right_area[b] * real(right_count[b])) / parent_area;
-        if (cost < best_cost) {
-            best_cost  = cost;
-            best_split = b;
-        }
-    }
-    // A leaf costs one test per object: keep it when no split is cheaper. The split's price above
-    // sees only the two halves' boxes; split further, though, a few objects end up each in its
-    // own box of one wide node (bvh.h), which costs one node test and a test of each object
-    // whose own box the ray crosses. That is far cheaper when the objects' boxes are much smaller
-    // than their union: the walls of a room, each a flat box, whose union is the whole room.
-    if (count <= max_leaf_objects) {
-        real own_boxes = 0;
-        for (std::size_t i = begin; i < end; ++i) own_boxes += items[i].box.half_area();
-        const real singles = traversal_cost + own_boxes / parent_area;
-        if (std::min(best_cost, singles) >= real(count)) return make_leaf();
-    }
-
-    auto first = items.begin() + std::ptrdiff_t(begin), last = items.begin() + std::ptrdiff_t(end);
-    std::size_t mid;
-    if (level < max_sah_depth && best_cost < infinity) {
-        auto middle = std::partition(
-            first, last, [&](const build_item& item) { return bin_of(item) < best_split; });
-        mid = std::size_t(middle - items.begin());
-    } else {
-        // A pathological spread (say, exponentially spaced objects) could make SAH splits peel
-        // off one object at a time; deep down, split at the median to bound the depth. Also
-        // when no bin split separates anything (centroids too far apart for the bin arithmetic).
-        mid = begin + count / 2;
-        std::nth_element(first, items.begin() + std::ptrdiff_t(mid), last,
-                         [&](const build_item& a, const build_item& b) {
-                             return a.centroid[axis] < b.centroid[axis];
-                         });
-    }
-    build(tree, items, begin, mid, level + 1);
-    std::uint32_t second = build(tree, items, mid, end, level + 1);
-    tree[index]          = {bounds, second, 0, std::uint8_t(axis)};
-    return index;
-}
-
-std::uint32_t bvh::pack_leaf(const build_node& b, const std::vector<bounded_object>& input,
-                             const std::vector<build_item>& items) {
-    // Sort the leaf's objects by type. Exactly these types (typeid, not dynamic_cast): a class
-    // derived from sphere may hit differently, and is asked through hit() instead.
-    leaf l{};
-    l.first        = std::uint32_t(objects.size());
-    l.first_sphere = std::uint32_t(spheres.size());
-    l.first_moving = std::uint32_t(moving_spheres.size());
-    l.first_quad   = std::uint32_t(quads.size());
-    l.first_other  = std::uint32_t(others.size());
-    std::vector<std::shared_ptr<hittable>> moving, flat, other;
+std::uint32_t wide_bvh::pack_leaf(const bvh::node& b) {
+    // Each object goes to the first kind that takes it, and runs of one kind are merged, so a
+    // leaf of one kind (most leaves) is one run.
+    leaf l{std::uint32_t(runs.size()), b.offset, 0, b.count};
     for (std::uint32_t i = b.offset; i < b.offset + b.count; ++i) {
-        const std::shared_ptr<hittable>& object = input[items[i].object].object;
-        const hittable& o                       = *object;
-        if (typeid(o) == typeid(sphere)) {
-            const auto& s = static_cast<const sphere&>(o);
-            spheres.push_back({s.center(), s.radius(), s.surface().get(), &s});
-            objects.push_back(object);
-            ++l.sphere_count;
-        } else if (typeid(o) == typeid(moving_sphere)) {
-            const auto& m = static_cast<const moving_sphere&>(o);
-            moving_spheres.push_back({m.path(), m.radius(), m.surface().get(), &m});
-            moving.push_back(object);
-            ++l.moving_count;
-        } else if (typeid(o) == typeid(quad)) {
-            const auto& q = static_cast<const quad&>(o);
-            quads.push_back({q.shape(), q.surface().get(), &q});
-            flat.push_back(object);
-            ++l.quad_count;
+        const hittable& object = *objects[i];
+        std::uint8_t of_kind   = others_kind;
+        std::optional<std::uint32_t> index;
+        if ((index = spheres.add(object))) {
+            of_kind = spheres_kind;
+        } else if ((index = moving_spheres.add(object))) {
+            of_kind = moving_spheres_kind;
+        } else if ((index = quads.add(object))) {
+            of_kind = quads_kind;
         } else {
-            others.push_back(&o);
-            other.push_back(object);
-            ++l.other_count;
+            for (std::size_t k = 0; k < extras.size() && !index; ++k)
+                if ((index = extras[k]->add(object))) of_kind = std::uint8_t(extra_kind + k);
+        }
+        if (!index) {
+            others.push_back(&object);
+            index = std::uint32_t(others.size() - 1);
+        }
+        if (l.run_count > 0 && runs.back().kind == of_kind) {
+            ++runs.back().count;  // consecutive in its kind's array too: added in leaf order
+        } else {
+            runs.push_back({*index, 1, of_kind});
+            ++l.run_count;
         }
     }
-    objects.insert(objects.end(), moving.begin(), moving.end());
-    objects.insert(objects.end(), flat.begin(), flat.end());
-    objects.insert(objects.end(), other.begin(), other.end());
-    for (std::size_t i = l.first; i < objects.size(); ++i) leaf_objects.push_back(objects[i].get());
     leaves.push_back(l);
     return leaf_bit | std::uint32_t(leaves.size() - 1);
 }
 
-std::uint32_t bvh::pack(const std::vector<build_node>& tree, std::uint32_t index,
-                        const std::vector<bounded_object>& input,
-                        const std::vector<build_item>& items) {
-    const build_node& b = tree[index];
-    if (b.count > 0) return pack_leaf(b, input, items);
+std::uint32_t wide_bvh::pack(const bvh& tree, std::uint32_t index) {
+    const std::vector<bvh::node>& binary = tree.nodes();
+    const bvh::node& b                   = binary[index];
+    if (b.count > 0) return pack_leaf(b);
 
     // The lanes: up to four nodes of the binary subtree below this one, none inside another (a
     // cut). It starts at the two children; while there is room, the interior lane with the
@@ -245,7 +68,7 @@ std::uint32_t bvh::pack(const std::vector<build_node>& tree, std::uint32_t index
         int axis;  // the binary node's split axis
     };
     struct lane {
-        std::uint32_t binary;    // index in tree
+        std::uint32_t binary;    // index in the binary tree
         std::vector<step> path;  // from this node down, one step per binary level
     };
     std::vector<lane> lanes = {{index + 1, {{0, b.axis}}}, {b.offset, {{1, b.axis}}}};
@@ -253,7 +76,7 @@ std::uint32_t bvh::pack(const std::vector<build_node>& tree, std::uint32_t index
         int widest       = -1;
         real widest_area = 0;
         for (std::size_t k = 0; k < lanes.size(); ++k) {
-            const build_node& c = tree[lanes[k].binary];
+            const bvh::node& c = binary[lanes[k].binary];
             // A NaN area (an unbounded box) is taken too: !(a <= b) rather than a > b.
             if (c.count == 0 && (widest < 0 || !(c.box.half_area() <= widest_area))) {
                 widest      = int(k);
@@ -261,8 +84,8 @@ std::uint32_t bvh::pack(const std::vector<build_node>& tree, std::uint32_t index
             }
         }
         if (widest < 0) break;  // every lane a leaf
-        const lane parent   = lanes[std::size_t(widest)];
-        const build_node& c = tree[parent.binary];
+        const lane parent  = lanes[std::size_t(widest)];
+        const bvh::node& c = binary[parent.binary];
         lane first = parent, second = parent;
         first.binary  = parent.binary + 1;
         second.binary = c.offset;
@@ -276,15 +99,14 @@ std::uint32_t bvh::pack(const std::vector<build_node>& tree, std::uint32_t index
     const auto here = std::uint32_t(nodes.size());
     nodes.push_back({});
     std::uint32_t child[4] = {0, 0, 0, 0};
-    for (std::size_t k = 0; k < lanes.size(); ++k)
-        child[k] = pack(tree, lanes[k].binary, input, items);
+    for (std::size_t k = 0; k < lanes.size(); ++k) child[k] = pack(tree, lanes[k].binary);
 
     node& n = nodes[here];
     const aabb nothing;  // unused lanes: an empty box, which every ray misses
     for (int axis = 0; axis < 3; ++axis) {
         real lower[4], upper[4];
         for (std::size_t k = 0; k < 4; ++k) {
-            const aabb& box_k = k < lanes.size() ? tree[lanes[k].binary].box : nothing;
+            const aabb& box_k = k < lanes.size() ? binary[lanes[k].binary].box : nothing;
             lower[k]          = box_k.axis_interval(axis).min;
             upper[k]          = box_k.axis_interval(axis).max;
         }
@@ -393,57 +215,44 @@ template <typename real4>
 }  // namespace
 
 // Inlined into the traversal (always_inline), where it runs once or twice per ray.
-[[gnu::always_inline]] inline bool bvh::hit_leaf(const leaf& l, const ray& r, interval& ray_t,
-                                                 hit_record& rec) const {
+[[gnu::always_inline]] inline bool wide_bvh::hit_leaf(const leaf& l, const ray& r, interval& ray_t,
+                                                      hit_record& rec) const {
     bool hit_anything = false;
     // Each test asks only for hits nearer than the nearest found so far (ray_t.max).
-    for (std::uint32_t i = l.first_sphere; i < l.first_sphere + l.sphere_count; ++i) {
-        const static_sphere& s = spheres[i];
-        if (hit_sphere(s.center, s.radius, r, ray_t, rec)) {  // as sphere::hit
-            rec.mat      = s.mat;
-            rec.object   = s.object;  // [ch08]
-            ray_t.max    = rec.t;
-            hit_anything = true;
-        }
-    }
-    for (std::uint32_t i = l.first_moving; i < l.first_moving + l.moving_count; ++i) {
-        const moving_sphere_fields& m = moving_spheres[i];
-        if (hit_sphere(m.path.at(r.time()), m.radius, r, ray_t, rec)) {  // as moving_sphere::hit
-            rec.mat      = m.mat;
-            rec.object   = m.object;  // [ch08]
-            ray_t.max    = rec.t;
-            hit_anything = true;
-        }
-    }
-    for (std::uint32_t i = l.first_quad; i < l.first_quad + l.quad_count; ++i) {
-        const quad_fields& q = quads[i];
-        if (hit_quad(q.shape, r, ray_t, rec)) {  // as quad::hit
-            rec.mat      = q.mat;
-            rec.object   = q.object;  // [ch08]
-            ray_t.max    = rec.t;
-            hit_anything = true;
-        }
-    }
-    for (std::uint32_t i = l.first_other; i < l.first_other + l.other_count; ++i) {
-        if (others[i]->hit(r, ray_t, rec)) {
-            ray_t.max    = rec.t;
-            hit_anything = true;
+    for (std::uint32_t k = l.first_run; k < l.first_run + l.run_count; ++k) {
+        const run& here = runs[k];
+        switch (here.kind) {
+            case spheres_kind:
+                hit_anything |= spheres.hit(here.first, here.count, r, ray_t, rec);
+                break;
+            case moving_spheres_kind:
+                hit_anything |= moving_spheres.hit(here.first, here.count, r, ray_t, rec);
+                break;
+            case quads_kind:
+                hit_anything |= quads.hit(here.first, here.count, r, ray_t, rec);
+                break;
+            case others_kind:
+                for (std::uint32_t i = here.first; i < here.first + here.count; ++i) {
+                    if (others[i]->hit(r, ray_t, rec)) {
+                        ray_t.max    = rec.t;
+                        hit_anything = true;
+                    }
+                }
+                break;
+            default:
+                hit_anything |=
+                    extras[here.kind - extra_kind]->hit(here.first, here.count, r, ray_t, rec);
         }
     }
     return hit_anything;
 }
 
-// Compiled twice, for any x86-64 and for AVX2, the faster chosen when the program starts (GCC's
-// function multiversioning, which a virtual function cannot have: hence hit(), below, calls
-// this). AVX2 tests four double boxes in one instruction. The two give the same answers: the box
-// test only subtracts, multiplies and compares, and AVX2 has no fused multiply-add that could
-// round differently (that is the separate FMA extension, deliberately not targeted).
 #if defined(__x86_64__)
 #define RT_ALSO_FOR_AVX2 [[gnu::target_clones("avx2", "default")]]
 #else
 #define RT_ALSO_FOR_AVX2  // other processors: one version, whatever vectors the build targets
 #endif
-RT_ALSO_FOR_AVX2 bool bvh::closest_hit(const ray& r, interval ray_t, hit_record& rec) const {
+RT_ALSO_FOR_AVX2 bool wide_bvh::closest_hit(const ray& r, interval ray_t, hit_record& rec) const {
     // The root's own box is not tested: its children's boxes lie inside it, so a ray that misses
     // it misses them too (their slab distances are rounded the same way), and a root that is a
     // leaf is just its objects, which answer for themselves.
@@ -459,7 +268,7 @@ RT_ALSO_FOR_AVX2 bool bvh::closest_hit(const ray& r, interval ray_t, hit_record&
         std::uint32_t child;
         real t_enter;
     };
-    pending stack[3 * max_traversal_depth];
+    pending stack[3 * bvh::max_depth];
     int top               = 0;
     std::uint32_t current = root;
     bool hit_anything     = false;
@@ -493,26 +302,23 @@ RT_ALSO_FOR_AVX2 bool bvh::closest_hit(const ray& r, interval ray_t, hit_record&
     }
 }
 
-bool bvh::hit(const ray& r, interval ray_t, hit_record& rec) const {
+bool wide_bvh::hit(const ray& r, interval ray_t, hit_record& rec) const {
     return closest_hit(r, ray_t, rec);
 }
 
-// [ch14 begin]
-RT_ALSO_FOR_AVX2 real bvh::shadow_fraction(const ray& r, interval ray_t) const {
+RT_ALSO_FOR_AVX2 real wide_bvh::shadow_fraction(const ray& r, interval ray_t) const {
     if (leaves.empty()) return 1;
     // Every child the box test lets through, in the binary tree's first-child-first order (octant
     // 0), so that the fractions multiply in the same order whatever the ray's direction.
     const slab_ray<real4> sr(r);
-    std::uint32_t stack[3 * max_traversal_depth + 1];  // as closest_hit's, and the one popped
+    std::uint32_t stack[3 * bvh::max_depth + 1];  // as closest_hit's, and the one popped
     int top               = 0;
     std::uint32_t current = root;
     real fraction         = 1;
     while (true) {
         if (current & leaf_bit) {
             const leaf& l = leaves[current & ~leaf_bit];
-            const auto count =
-                std::uint32_t(l.sphere_count + l.moving_count + l.quad_count + l.other_count);
-            for (std::uint32_t i = l.first; i < l.first + count; ++i) {
+            for (std::uint32_t i = l.first_object; i < l.first_object + l.object_count; ++i) {
                 fraction *= leaf_objects[i]->transmittance(r, ray_t);
                 if (fraction == 0) return 0;
             }
@@ -532,9 +338,8 @@ RT_ALSO_FOR_AVX2 real bvh::shadow_fraction(const ray& r, interval ray_t) const {
 }
 
 // After shadow_fraction: Clang wants a multiversioned function declared so before its first use.
-real bvh::transmittance(const ray& r, interval ray_t) const {
+real wide_bvh::transmittance(const ray& r, interval ray_t) const {
     return shadow_fraction(r, ray_t);
 }
-// [ch14 end]
 
 }  // namespace rt

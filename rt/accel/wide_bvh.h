@@ -1,61 +1,61 @@
-// A bounding volume hierarchy: a tree of boxes over the scene's objects, so a ray tests the
-// objects inside the boxes it crosses instead of every object. Chapter 07.
-// Built top-down with the surface area heuristic over binned centroids: a split's cost is
-//   C = C_traverse + sum over both sides of (area(side) / area(parent)) * count(side),
-// the expected number of object tests, since a random ray that crosses the parent crosses a
-// child box with probability area ratio. Traversal visits the nearer child first, and skips any
-// box farther than the nearest hit found so far.
-// Stored for speed, as the same binary tree with levels folded into their parents: a wide node
-// holds up to four descendants' boxes side by side (the widest expanded first), tested together by
-// vector instructions, and is visited in the binary tree's own order, so the BVH tests the same
-// objects in the same order as a binary one would. The leaves keep their spheres and quads by type,
-// as plain arrays of fields, so testing one is an inlined hit_sphere() or hit_quad() instead of a
-// virtual call; any other object is asked through hittable::hit.
+// Chapter 07's BVH, packed for speed: the same binary tree, with levels folded into their
+// parents. Chapter 17.
+// - A wide node holds up to four descendants' boxes side by side (the widest expanded first),
+//   tested together by vector instructions, and is visited in the binary tree's own order, so
+//   the wide BVH tests the same objects in the same order as chapter 07's, and finds the same
+//   hits, equal-t ties included (the first found wins in both).
+// - The leaves keep their spheres, moving spheres and quads by type, as plain arrays of fields
+//   (leaf_shapes.h), so testing one is an inlined hit_sphere() or hit_quad() instead of a
+//   virtual call. A leaf is a list of runs, each a stretch of its objects of one kind, so the
+//   objects are still tested in the leaf's own order; any other object is asked through
+//   hittable::hit, and a later chapter's shapes through the leaf_shapes makers it hands over.
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
-#include "rt/accel/bounded.h"
-#include "rt/geometry/moving_sphere.h"
-#include "rt/geometry/quad.h"
+#include "rt/accel/bvh.h"
+#include "rt/accel/leaf_shapes.h"
 
 namespace rt {
 
-class bvh : public bounded_hittable {
+class wide_bvh : public bounded_hittable {
   public:
-    // Builds the tree over `objects`; deterministic (no random choices).
-    explicit bvh(const std::vector<bounded_object>& objects);
+    // What a leaf object becomes in the wide BVH (by default itself). Its box must stay the
+    // same: the tree's boxes are the binary tree's.
+    using object_map = std::function<std::shared_ptr<hittable>(const std::shared_ptr<hittable>&)>;
+
+    // Packs `tree`, its leaf objects passed through `map` (if given); `extra_kinds` make the
+    // leaf_shapes of shapes beyond the built-in ones.
+    explicit wide_bvh(const bvh& tree, const object_map& map = {},
+                      const std::vector<leaf_shapes_maker>& extra_kinds = {});
+    // Builds chapter 07's tree over `objects`, then packs it.
+    explicit wide_bvh(const std::vector<bounded_object>& objects);
 
     bool hit(const ray& r, interval ray_t, hit_record& rec) const override;
     aabb bounding_box() const override { return box; }
 
-    // [ch14 begin]
-    // Every leaf the ray's box test lets through, not only the nearest: a medium in front of
-    // a blocker still counts, and any blocker ends the search.
+    // As chapter 07's bvh: every leaf the ray's box test lets through, in the binary tree's
+    // first-child-first order, so that the fractions multiply in the same order.
     real transmittance(const ray& r, interval ray_t) const override;
     void visit_parts(part_visitor& visitor) const override {
-        for (const auto* object : leaf_objects) visitor.visit(*object);
+        for (const auto& object : objects) visitor.visit(*object);
     }
-    // [ch14 end]
 
-    // The binary tree's shape: its boxes (interior nodes and leaves) and its levels.
-    std::size_t node_count() const { return boxes_in_tree; }
-    std::size_t object_count() const { return objects.size(); }
-    int depth() const { return levels; }
-    // The surface area heuristic's measure of the stored tree, as build() prices splits: a ray
-    // that crosses the root's box crosses a box inside it with probability area ratio, so a
-    // random ray tests on average this many wide nodes. Fewer is faster.
-    real expected_node_tests() const { return wide_node_area / box.half_area(); }
+    // The surface area heuristic's measure of the stored tree, as bvh's build prices splits: a
+    // ray that crosses the root's box crosses a box inside it with probability area ratio, so
+    // a random ray tests on average this many wide nodes. Fewer is faster.
+    real expected_node_tests() const {
+        return box.half_area() > 0 ? wide_node_area / box.half_area() : 0;
+    }
+    std::size_t wide_node_count() const { return nodes.size(); }
 
   private:
-    struct build_node;
-    struct build_item;
-
     // Four reals side by side, one per child of a wide node. GCC and Clang compile arithmetic on
     // such a vector to SIMD instructions: two SSE2 instructions for four doubles on any x86-64,
-    // one with AVX2 (bvh::hit is also compiled for AVX2, chosen at run time).
+    // one with AVX2 (hit() is also compiled for AVX2, chosen at run time).
     using real4 = real __attribute__((vector_size(4 * sizeof(real))));
 
     // A wide node: the binary tree's node with up to four of its descendants pulled up, so that
@@ -68,67 +68,54 @@ class bvh : public bounded_hittable {
         real4 bounds[6];  // the children's box bounds: lower x, y, z, then upper x, y, z
         std::uint32_t child[4];
         // The order in which the binary tree would visit the children, nearer child first at
-        // each of its two levels, for each octant of ray directions (bit k set: the ray runs
-        // towards smaller coordinates on axis k): lane of the i-th visit in bits 2i and 2i + 1.
+        // each of its levels, for each octant of ray directions (bit k set: the ray runs towards
+        // smaller coordinates on axis k): lane of the i-th visit in bits 2i and 2i + 1.
         std::uint8_t order[8];
     };
     static constexpr std::uint32_t leaf_bit = 0x80000000u;
 
-    // A leaf: its objects from `first` on in `objects` (static spheres, then moving spheres, then
-    // quads, then the rest), and where each kind starts in its typed array.
+    // The kinds of a run: the built-in shapes, anything else (asked through hit()), then the
+    // extra kinds in the order given.
+    enum kind : std::uint8_t {
+        spheres_kind,
+        moving_spheres_kind,
+        quads_kind,
+        others_kind,
+        extra_kind
+    };
+    // `count` consecutive objects of the leaf, of one kind: that kind's shapes from `first` on.
+    struct run {
+        std::uint32_t first;
+        std::uint16_t count;
+        std::uint8_t kind;
+    };
+    // A leaf: its runs from `first_run` on, and its objects from `first_object` on in objects.
     struct leaf {
-        std::uint32_t first, first_sphere, first_moving, first_quad, first_other;
-        std::uint16_t sphere_count, moving_count, quad_count, other_count;
-    };
-    // A sphere's fields, copied from it: tested as sphere::hit() tests it (same hit_sphere()).
-    struct static_sphere {
-        point3 center;
-        real radius;
-        const material* mat;
-        const hittable* object;
-    };
-    // A moving sphere's fields, tested as moving_sphere::hit() tests it.
-    struct moving_sphere_fields {
-        center_path path;
-        real radius;
-        const material* mat;
-        const hittable* object;
+        std::uint32_t first_run, first_object;
+        std::uint16_t run_count, object_count;
     };
 
-    // A quad's fields, tested as quad::hit() tests it (same hit_quad()).
-    struct quad_fields {
-        quad_shape shape;
-        const material* mat;
-        const hittable* object;
-    };
-
-    std::uint32_t build(std::vector<build_node>& tree, std::vector<build_item>& items,
-                        std::size_t begin, std::size_t end, int level);
-    std::uint32_t pack(const std::vector<build_node>& tree, std::uint32_t index,
-                       const std::vector<bounded_object>& input,
-                       const std::vector<build_item>& items);
-    std::uint32_t pack_leaf(const build_node& b, const std::vector<bounded_object>& input,
-                            const std::vector<build_item>& items);
+    std::uint32_t pack(const bvh& tree, std::uint32_t index);
+    std::uint32_t pack_leaf(const bvh::node& b);
     bool hit_leaf(const leaf& l, const ray& r, interval& ray_t, hit_record& rec) const;
     bool closest_hit(const ray& r, interval ray_t, hit_record& rec) const;
-    // [ch14] transmittance(), compiled twice as closest_hit() is (a virtual function cannot be).
+    // transmittance(), compiled twice as closest_hit() is (a virtual function cannot be).
     real shadow_fraction(const ray& r, interval ray_t) const;
 
     aabb box;
-    std::size_t boxes_in_tree = 0;
-    real wide_node_area       = 0;  // the wide nodes' half areas, summed (the measure above)
-    int levels                = 0;
-    std::uint32_t root = leaf_bit;  // where traversal starts: a node, or a leaf (none if empty)
+    real wide_node_area = 0;         // the wide nodes' half areas, summed (the measure above)
+    std::uint32_t root  = leaf_bit;  // where traversal starts: a node, or a leaf (none if empty)
     std::vector<node> nodes;
     std::vector<leaf> leaves;
-    // Each leaf's objects, contiguous, in the order its typed arrays list them: static spheres,
-    // then moving spheres, then quads, then the rest.
+    std::vector<run> runs;
+    // Every leaf's objects, leaf by leaf, in the binary tree's order (after the object map).
     std::vector<std::shared_ptr<hittable>> objects;
     std::vector<const hittable*> leaf_objects;  // the same, as plain pointers
-    std::vector<static_sphere> spheres;
-    std::vector<moving_sphere_fields> moving_spheres;
-    std::vector<quad_fields> quads;
+    sphere_leaves spheres;
+    moving_sphere_leaves moving_spheres;
+    quad_leaves quads;
     std::vector<const hittable*> others;
+    std::vector<std::unique_ptr<leaf_shapes>> extras;
 };
 
 }  // namespace rt

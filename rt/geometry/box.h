@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "rt/accel/bounded.h"
-#include "rt/accel/wide_bvh.h"
+#include "rt/accel/bvh.h"
 
 namespace rt {
 

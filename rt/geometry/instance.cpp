@@ -30,7 +30,7 @@ bool translate::hit(const ray& r, interval ray_t, hit_record& rec) const {
 }
 
 rotate::rotate(const bounded_object& obj, axis turn_about, real degrees)
-    : object(obj.object), about(turn_about) {
+    : object(obj.object), about(turn_about), angle(degrees) {
     require(std::isfinite(degrees), "rotation angle", "be finite", degrees);
     real radians = degrees_to_radians(degrees);
     sin_theta    = std::sin(radians);

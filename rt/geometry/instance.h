@@ -29,6 +29,10 @@ class translate : public bounded_hittable {
     }
     // [ch14 end]
 
+    // What is placed, and where: enough to place another object the same way.
+    const std::shared_ptr<hittable>& placed() const { return object; }
+    const vec3& displacement() const { return offset; }
+
   private:
     std::shared_ptr<hittable> object;
     vec3 offset;
@@ -65,11 +69,17 @@ class rotate : public bounded_hittable {
     vec3 to_world(const vec3& v) const { return turn(v, sin_theta); }
     vec3 to_object(const vec3& v) const { return turn(v, -sin_theta); }
 
+    // What is turned, and how: enough to turn another object the same way.
+    const std::shared_ptr<hittable>& placed() const { return object; }
+    axis turned_about() const { return about; }
+    real degrees() const { return angle; }
+
   private:
     vec3 turn(const vec3& v, real sin_angle) const;
 
     std::shared_ptr<hittable> object;
     axis about;  // the two coordinates that turn: (y, z) about x, (z, x) about y, (x, y) about z
+    real angle;  // in degrees, as given
     real sin_theta, cos_theta;
     aabb box;
 };

@@ -11,7 +11,7 @@
 
 #include "ch03/material_helpers.h"
 #include "rt/accel/bounded.h"
-#include "rt/accel/wide_bvh.h"
+#include "rt/accel/bvh.h"
 #include "rt/core/error.h"
 #include "rt/core/rng.h"
 #include "rt/geometry/moving_sphere.h"

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "rt/accel/wide_bvh.h"
+#include "rt/accel/bvh.h"
 #include "rt/core/rng.h"
 #include "rt/geometry/moving_sphere.h"
 #include "rt/geometry/quad.h"

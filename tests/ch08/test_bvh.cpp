@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "ch03/material_helpers.h"
-#include "rt/accel/wide_bvh.h"
+#include "rt/accel/bvh.h"
 #include "rt/core/rng.h"
 #include "rt/geometry/moving_sphere.h"
 #include "rt/geometry/quad.h"

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "ch03/material_helpers.h"
-#include "rt/accel/wide_bvh.h"
+#include "rt/accel/bvh.h"
 #include "rt/camera/thin_lens_camera.h"
 #include "rt/core/error.h"
 #include "rt/core/rng.h"

@@ -14,7 +14,7 @@
 #include "ch03/material_helpers.h"
 #include "ch03/sampling_checks.h"
 #include "ch14/direction_checks.h"
-#include "rt/accel/wide_bvh.h"
+#include "rt/accel/bvh.h"
 #include "rt/geometry/box.h"
 #include "rt/geometry/instance.h"
 #include "rt/geometry/quad.h"

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "ch03/material_helpers.h"
-#include "rt/accel/wide_bvh.h"
+#include "rt/accel/bvh.h"
 #include "rt/geometry/box.h"
 #include "rt/geometry/instance.h"
 #include "rt/geometry/quad.h"

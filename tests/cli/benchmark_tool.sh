@@ -127,9 +127,31 @@ for p in problems:
     print("FAIL:", p)
 sys.exit(1 if problems else 0)
 EOF_VERSUS
+# Against a build older than chapter 17 (here: one without its program), --versus runs each
+# scene through the program that build has: the chapter's own.
+mkdir -p "$tmp/old-build/chapters"
+for chapter in ch06_defocus ch07_motion_blur ch11_instances ch13_final; do
+    ln -s "$build/chapters/$chapter" "$tmp/old-build/chapters/$chapter"
+done
+"$src/tools/benchmark" --versus "$tmp/old-build" --quick --build "$build" --out-dir "$tmp" 2>"$tmp/log" ||
+    { cat "$tmp/log"; echo "FAIL: tools/benchmark --versus against a build before ch17 failed"; exit 1; }
+python3 - "$tmp" <<'EOF_EARLIER'
+import json, sys, os
+v = json.load(open(os.path.join(sys.argv[1], "versus.json")))
+want = {"book1_final": "ch06_defocus --scene final", "book1_bvh": "ch07_motion_blur --scene ch06-final",
+        "bouncing_bvh": "ch07_motion_blur --width", "bouncing_list": "ch07_motion_blur --width",
+        "cornell_box": "ch11_instances --width", "book2_final": "ch13_final --width"}
+problems = [f"versus {s['name']}: earlier command {s['old_command']!r}, want {want[s['name']]!r}..."
+            for s in v["scenes"] if not s["old_command"].startswith(want[s["name"]])]
+problems += [f"versus {s['name']}: new command {s['chapter']}" for s in v["scenes"]
+             if s["name"] not in ("book1_final", "bouncing_list") and s["chapter"] != "ch17_fast_traversal"]
+for p in problems:
+    print("FAIL:", p)
+sys.exit(1 if problems else 0)
+EOF_EARLIER
 if "$src/tools/benchmark" --versus "$tmp/no-build" --quick --build "$build" --out-dir "$tmp" 2>"$tmp/log"; then
     echo "FAIL: --versus without an old build succeeded"; exit 1
 fi
 [ "$(wc -l <"$tmp/log")" -eq 1 ] && grep -q "no-build" "$tmp/log" ||
     { cat "$tmp/log"; echo "FAIL: --versus without a build: not one line naming it"; exit 1; }
-echo "tools/benchmark --quick: 6 scenes, JSON, make_report lines and performance.md consistent (what the targets ask of one ray restated); --rewrite reproduces it; --versus side by side"
+echo "tools/benchmark --quick: 6 scenes, JSON, make_report lines and performance.md consistent (what the targets ask of one ray restated); --rewrite reproduces it; --versus side by side, also against a build before ch17"

@@ -1,0 +1,27 @@
+// Any scene made fast without touching how it is built: every chapter-07 bvh in its world,
+// however deep (in lists, in other BVHs, inside instances), replaced by a wide_bvh of the same
+// tree. Chapter 17. The wide BVH finds the same hits in the same order, so the image is the same
+// byte for byte; only the time changes.
+// Instances are placed again around their faster contents (the same offset, axis and angle, so
+// the same numbers); shapes, materials and media are shared, not copied, so the lights a scene's
+// integrator finds and every hit record's object and material are the same as before. A
+// medium's boundary is left as it is.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "rt/accel/leaf_shapes.h"
+#include "rt/scene/scene.h"
+
+namespace rt {
+
+// The world with every bvh in it packed; extra_kinds as wide_bvh's. An object holding no bvh
+// comes back as it is.
+std::shared_ptr<hittable> with_wide_bvhs(const std::shared_ptr<hittable>& world,
+                                         const std::vector<leaf_shapes_maker>& extra_kinds = {});
+
+// The scene with its world so packed: the same camera, sky and settings.
+scene with_fast_traversal(scene s, const std::vector<leaf_shapes_maker>& extra_kinds = {});
+
+}  // namespace rt
