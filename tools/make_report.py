@@ -11,10 +11,12 @@ figures rendered before it: the sources side by side, and below each the region 
 ZOOM times."""
 import json
 import os
-import platform
 import re
-import subprocess
 import sys
+
+sys.dont_write_bytecode = True  # leave no __pycache__ in tools/
+sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
+from rtlib import provenance  # noqa: E402  (tools/rtlib: what the tools share)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 REPORT = os.path.join(ROOT, "report")
@@ -179,17 +181,10 @@ def convergence_section():
 
 
 def machine():
-    cpu = platform.processor() or "unknown CPU"
-    try:
-        with open("/proc/cpuinfo") as f:
-            for line in f:
-                if line.startswith("model name"):
-                    cpu = line.split(":", 1)[1].strip()
-                    break
-    except OSError:
-        pass
-    compiler = subprocess.run(["g++", "--version"], capture_output=True, text=True).stdout
-    return f"{os.cpu_count()} cores, {cpu}; {compiler.splitlines()[0] if compiler else 'g++'}"
+    """The machine, and the compiler of build/release (the build tools/render-report renders
+    the figures with)."""
+    built = provenance.compiler(os.path.join(ROOT, "build", "release"))
+    return f"{os.cpu_count()} cores, {provenance.cpu()}; {built['compiler']}"
 
 
 MACHINE = os.path.join(REPORT, "figures", "machine.txt")

@@ -1,0 +1,13 @@
+"""What the Python tools share, one copy each:
+
+  rtlib.pfm         PFM images: read and write (either byte order, the bottom row first on disk)
+  rtlib.provenance  where a measurement was made: the machine, the compiler of a build, and the
+                    commit a build or the tree is at (and whether its sources differ from it)
+
+A tool finds this package beside itself, from any working directory, and writes no bytecode
+into the tree:
+
+    sys.dont_write_bytecode = True
+    sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
+    from rtlib import pfm, provenance
+"""
