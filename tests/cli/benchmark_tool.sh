@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # tools/benchmark on tiny images (--quick): the JSON record of every scene, the line per scene
-# for tools/make_report.py, and performance.md's table, with ratios that follow from the rates.
+# for tools/make-report, and performance.md's table, with ratios that follow from the rates.
 #   benchmark_tool.sh SOURCE_DIR BUILD_DIR
 set -euo pipefail
 src=$1 build=$2
@@ -154,4 +154,4 @@ if "$src/tools/benchmark" --versus "$tmp/no-build" --quick --build "$build" --ou
 fi
 [ "$(wc -l <"$tmp/log")" -eq 1 ] && grep -q "no-build" "$tmp/log" ||
     { cat "$tmp/log"; echo "FAIL: --versus without a build: not one line naming it"; exit 1; }
-echo "tools/benchmark --quick: 6 scenes, JSON, make_report lines and performance.md consistent (what the targets ask of one ray restated); --rewrite reproduces it; --versus side by side, also against a build before ch17"
+echo "tools/benchmark --quick: 6 scenes, JSON, make-report lines and performance.md consistent (what the targets ask of one ray restated); --rewrite reproduces it; --versus side by side, also against a build before ch17"
