@@ -167,6 +167,18 @@ case_chapter_diff_refuses_unknown_chapter() {
         else echo "ok $case: $chapter -> $err"; fi
     done
 }
+case_chapter_diff_quiet_when_reader_stops() {
+    # Far more output than a pipe holds (64 KiB): chapter-diff is still writing when head leaves.
+    seq -f 'int filler_%g = 0;' 20000 >>"$repo/rt/base.cpp"
+    "$tools/chapter-diff" ch01 --root "$repo" 2>"$work/err" | head -1 >"$work/out"
+    local status=${PIPESTATUS[0]}
+    out=$(cat "$work/out") err=$(cat "$work/err")
+    if [ -n "$err" ]; then fail "stderr when the reader stops early: $err"
+    elif [ "$out" != "--- /dev/null" ]; then fail "head -1 read '$out', not '--- /dev/null'"
+    elif [ "$status" -ne 141 ] && [ "$status" -ne 0 ]; then
+        fail "exit code $status, not 141 (SIGPIPE, as a shell reports it) or 0"
+    else echo "ok $case: quiet when its reader stops after one line (exit code $status)"; fi
+}
 
 cases=("$@")
 [ $# -gt 0 ] || mapfile -t cases < <(declare -F | sed -n 's/^declare -f case_//p')
