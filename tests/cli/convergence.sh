@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # tools/convergence on a tiny case (report: "Speed against error"): a reference made on the fly
 # into a temporary folder, then every method at 1..8 spp of --scene ch10 at 32 px.
-#   convergence.sh CH16_SOBOL
+#   convergence.sh CH17_FAST_TRAVERSAL      (the program tools/convergence renders with)
 # Checks: the reference and its record are written, and a normal run leaves them untouched; the
 # CSV has its columns, one curve per method with spp doubling from 1; its RMSE of mis + sobol at
 # 8 spp equals one computed here, independently, from the same render; the plot is a PNG; the
