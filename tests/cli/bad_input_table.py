@@ -27,6 +27,10 @@ import tempfile
 import time
 import zlib
 
+sys.dont_write_bytecode = True  # leave no __pycache__ in tools/
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)), "..", "..", "tools"))
+from rtlib import pfm  # noqa: E402  (tools/rtlib: the tools' PFM writer)
+
 SECTION = "## Bad input and what it gets"
 INTERRUPT = re.compile(
     r"^(?P<command>.+?) & sleep (?P<seconds>[0-9.]+); kill -(?P<signal>[A-Z]+) \$!$")
@@ -101,7 +105,7 @@ def make_files(folder, with_bomb):
     old_png = png(16, 8, zlib.compress(rows))
     files = {
         "old.png": old_png,
-        "old.pfm": b"PF\n2 1\n-1.0\n" + struct.pack("<6f", 0.25, 0.5, 1, 2, 4, 8),
+        "old.pfm": pfm.encode(pfm.Image(2, 1, 3, [0.25, 0.5, 1, 2, 4, 8])),
         "empty.png": b"",
         "half.png": old_png[:len(old_png) // 2],
         "notes.png": b"These are not the pixels you are looking for.\n",

@@ -1,6 +1,7 @@
 """What the Python tools share, one copy each:
 
-  rtlib.pfm         PFM images: read and write (either byte order, the bottom row first on disk)
+  rtlib.pfm         PFM images: read, write and encode (either byte order, the bottom row
+                    first on disk)
   rtlib.provenance  where a measurement was made: the machine, the compiler of a build, and the
                     commit a build or the tree is at (and whether its sources differ from it)
 

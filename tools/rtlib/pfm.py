@@ -70,15 +70,14 @@ def read(path):
     return Image(width, height, channels, pixels)
 
 
-def write(path, image, byteorder="little"):
-    """Writes image (an Image; pixels any sequence of numbers, top row first) to path, with the
-    floats in the given byte order ("little" or "big")."""
+def encode(image, byteorder="little"):
+    """The bytes of image (an Image; pixels any sequence of numbers, top row first) as a PFM
+    file, with the floats in the given byte order ("little" or "big")."""
     if byteorder not in ("little", "big"):
         raise ValueError(f"byteorder must be 'little' or 'big', got {byteorder!r}")
     magics = {n: m for m, n in CHANNELS.items()}
     if image.channels not in magics:
         raise ValueError(f"a PFM image has 1 or 3 channels, got {image.channels}")
-    magic = magics[image.channels]
     pixels = array.array("f", image.pixels)
     row = image.width * image.channels
     if len(pixels) != row * image.height:
@@ -90,9 +89,15 @@ def write(path, image, byteorder="little"):
     if byteorder != sys.byteorder:
         stored.byteswap()
     scale = "-1.0" if byteorder == "little" else "1.0"
+    header = f"{magics[image.channels].decode()}\n{image.width} {image.height}\n{scale}\n"
+    return header.encode() + stored.tobytes()
+
+
+def write(path, image, byteorder="little"):
+    """Writes image to path as a PFM file (encode)."""
+    data = encode(image, byteorder)
     with open(path, "wb") as f:
-        f.write(f"{magic.decode()}\n{image.width} {image.height}\n{scale}\n".encode())
-        f.write(stored.tobytes())
+        f.write(data)
 
 
 def as_array(image):
