@@ -1,5 +1,5 @@
 // Chapter 10: lights. A diffuse_light emits its color (on both faces, as in book 2) and reflects
-// nothing; the path tracer adds emission at every hit, L = Le + attenuation * L(scattered). With
+// nothing; the path tracer adds emission at every hit, L = Le + weight * L(scattered). With
 // a black background all light comes from the emitters. Quads Q + a u + b v make rectangles in
 // any orientation (book 2's first xy, yz and xz rectangles are special cases).
 #include "rt/integrators/path_tracer.h"

@@ -72,7 +72,7 @@ color mis_tracer::radiance(const ray& camera_ray, sampler& s, int max_depth) con
         }
 
         s.start_segment(segment);  // [ch16]
-        const bool evaluable = surface.evaluable() && !lights.empty();
+        const bool evaluable = surface.lobe_kind() == lobe::evaluable && !lights.empty();
         // Next-event estimation: only where the light it finds is still within max_depth.
         if (evaluable && segment + 1 < max_depth) {
             real pick = s.next_1d();
@@ -90,16 +90,17 @@ color mis_tracer::radiance(const ray& camera_ray, sampler& s, int max_depth) con
             }
         }
 
-        color attenuation;
-        ray scattered;
-        if (!surface.scatter(r, rec, s, attenuation, scattered)) break;
-        weigh_emission = evaluable;
-        if (evaluable) material_pdf = surface.pdf(r, rec, unit_vector(scattered.direction()));
+        const std::optional<scatter_sample> next = surface.scatter(r, rec, s);
+        if (!next) break;
+        // The light the next segment finds was also aimed at from here only where the lobe
+        // could be weighed; the sample brings the density it was drawn with.
+        weigh_emission = evaluable && next->from == lobe::evaluable;
+        material_pdf   = next->pdf;
         // Where the scattered ray really starts (off the surface): light_set::pdf_of_hit asks
         // the light's shape again along this same ray, and must find the same point.
-        last_vertex = scattered.origin();
-        throughput  = throughput * attenuation;
-        r           = scattered;
+        last_vertex = next->scattered.origin();
+        throughput  = throughput * next->weight;
+        r           = next->scattered;
 
         if (segment + 1 >= roulette_after) {
             real carried = max_abs_component(throughput);

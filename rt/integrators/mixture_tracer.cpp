@@ -31,29 +31,30 @@ color mixture_tracer::radiance(const ray& camera_ray, sampler& s, int max_depth)
         radiance += throughput * surface.emitted(r, rec);
         s.start_segment(segment);  // [ch16]
 
-        if (!surface.evaluable() || lights.empty()) {
-            color attenuation;
-            ray scattered;
-            if (!surface.scatter(r, rec, s, attenuation, scattered)) break;
-            throughput = throughput * attenuation;
-            r          = scattered;
+        if (surface.lobe_kind() != lobe::evaluable || lights.empty()) {
+            const std::optional<scatter_sample> next = surface.scatter(r, rec, s);
+            if (!next) break;
+            throughput = throughput * next->weight;
+            r          = next->scattered;
             continue;
         }
 
         vec3 wi;
+        real material_pdf = 0;  // the material's density of wi
         if (s.next_1d() < real(0.5)) {
-            color attenuation;
-            ray scattered;
-            if (!surface.scatter(r, rec, s, attenuation, scattered)) break;
-            wi = unit_vector(scattered.direction());
+            const std::optional<scatter_sample> next = surface.scatter(r, rec, s);
+            if (!next) break;
+            wi           = unit_vector(next->scattered.direction());
+            material_pdf = next->pdf;
         } else {
             real pick = s.next_1d();
             light_sample towards;
             if (!lights.sample(rec.p, pick, s.next_2d(), towards)) break;
-            wi = towards.wi;
+            wi           = towards.wi;
+            material_pdf = surface.pdf(r, rec, wi);
         }
         // The mixture's density of wi, whichever half drew it: both halves could have.
-        real pdf = real(0.5) * surface.pdf(r, rec, wi) + real(0.5) * lights.pdf(rec.p, wi);
+        real pdf = real(0.5) * material_pdf + real(0.5) * lights.pdf(rec.p, wi);
         color f  = surface.eval(r, rec, wi);
         if (!(pdf > 0) || is_black(f)) break;  // below the surface: no light comes that way
         throughput = throughput * f / pdf;

@@ -14,7 +14,7 @@ path_tracer::path_tracer(std::shared_ptr<const hittable> w, const background& b)
 color path_tracer::radiance(const ray& camera_ray, sampler& s, int max_depth) const {
     ray r = camera_ray;
     color radiance(0, 0, 0);
-    color throughput(1, 1, 1);  // product of the attenuations along the path so far
+    color throughput(1, 1, 1);  // product of the scattering weights along the path so far
     for (int segment = 0; segment < max_depth; ++segment) {
         hit_record rec;
         count_ray();
@@ -25,11 +25,10 @@ color path_tracer::radiance(const ray& camera_ray, sampler& s, int max_depth) co
         }
         radiance += throughput * rec.mat->emitted(r, rec);  // [ch10]
         s.start_segment(segment);                           // [ch16] the layout of sampler.h
-        color attenuation;
-        ray scattered;
-        if (!rec.mat->scatter(r, rec, s, attenuation, scattered)) break;
-        throughput = throughput * attenuation;
-        r          = scattered;
+        const std::optional<scatter_sample> next = rec.mat->scatter(r, rec, s);
+        if (!next) break;  // absorbed
+        throughput = throughput * next->weight;
+        r          = next->scattered;
     }
     return radiance;
 }

@@ -16,8 +16,8 @@ real dielectric::reflectance(real cos_theta, real eta) const {
                                          : schlick_reflectance(cos_theta, eta);
 }
 
-bool dielectric::scatter(const ray& r_in, const hit_record& rec, sampler& s, color& attenuation,
-                         ray& scattered) const {
+std::optional<scatter_sample> dielectric::scatter(const ray& r_in, const hit_record& rec,
+                                                  sampler& s) const {
     real choice    = s.next_1d();
     real eta       = rec.front_face ? 1 / ior : ior;
     vec3 unit_dir  = unit_vector(r_in.direction());
@@ -27,9 +27,8 @@ bool dielectric::scatter(const ray& r_in, const hit_record& rec, sampler& s, col
         total_internal_reflection(cos_theta, eta) || reflectance(cos_theta, eta) > choice;
     vec3 direction = reflects ? reflect(unit_dir, rec.normal) : refract(unit_dir, rec.normal, eta);
 
-    scattered   = rec.spawn_ray(r_in, direction);
-    attenuation = color(1, 1, 1);  // clear glass absorbs nothing
-    return true;
+    return scatter_sample{rec.spawn_ray(r_in, direction),
+                          color(1, 1, 1)};  // clear: absorbs nothing
 }
 
 }  // namespace rt

@@ -19,8 +19,8 @@ class dielectric : public material {
     explicit dielectric(real ior, fresnel_model model = fresnel_model::schlick);
 
     // Draws 1 sampler dimension (the choice between reflection and refraction).
-    bool scatter(const ray& r_in, const hit_record& rec, sampler& s, color& attenuation,
-                 ray& scattered) const override;
+    std::optional<scatter_sample> scatter(const ray& r_in, const hit_record& rec,
+                                          sampler& s) const override;
 
     // The reflectance for a ray arriving at cos_theta to the normal, eta = n_in / n_out.
     real reflectance(real cos_theta, real eta) const;

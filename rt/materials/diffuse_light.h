@@ -1,7 +1,7 @@
 // An emitter: a surface that sends out light and reflects none. Chapter 10.
 // Like book 2 (whose Cornell scenes we match), it emits its texture's color on BOTH faces:
 // seen from behind, a light quad glows just as brightly. The integrator adds the emission
-// at every hit: L = Le + attenuation * L(scattered).
+// at every hit: L = Le + weight * L(scattered).
 #pragma once
 
 #include <memory>
@@ -22,8 +22,8 @@ class diffuse_light : public material {
     }
 
     // Absorbs every ray: a light does not reflect.
-    bool scatter(const ray&, const hit_record&, sampler&, color&, ray&) const override {
-        return false;
+    std::optional<scatter_sample> scatter(const ray&, const hit_record&, sampler&) const override {
+        return std::nullopt;
     }
 
   private:

@@ -6,11 +6,15 @@
 
 namespace rt {
 
-ray scatter_diffuse(const ray& r_in, const hit_record& rec, sampler& s) {
+scatter_sample scatter_diffuse(const ray& r_in, const hit_record& rec, sampler& s,
+                               const color& albedo) {
     // The book's normal + random_unit_vector() has this same cosine density; sampling it in a
     // local frame needs no rejection loop and no degenerate-direction fix-up.
-    vec3 direction = onb(rec.normal).to_world(sample_cosine_hemisphere(s.next_2d()));
-    return rec.spawn_reflected_ray(r_in, direction);
+    const vec3 local = sample_cosine_hemisphere(s.next_2d());
+    scatter_sample sample{rec.spawn_reflected_ray(r_in, onb(rec.normal).to_world(local)), albedo};
+    sample.from = lobe::evaluable;                   // [ch14]
+    sample.pdf  = cosine_hemisphere_pdf(local.z());  // [ch14] the cosine, from the local frame
+    return sample;
 }
 
 // [ch14 begin]
@@ -23,11 +27,9 @@ lambertian::lambertian(const color& a) : albedo_(a) {
     require_reflectance(a, "lambertian albedo");
 }
 
-bool lambertian::scatter(const ray& r_in, const hit_record& rec, sampler& s, color& attenuation,
-                         ray& scattered) const {
-    scattered   = scatter_diffuse(r_in, rec, s);
-    attenuation = albedo_;
-    return true;
+std::optional<scatter_sample> lambertian::scatter(const ray& r_in, const hit_record& rec,
+                                                  sampler& s) const {
+    return scatter_diffuse(r_in, rec, s, albedo_);
 }
 
 }  // namespace rt

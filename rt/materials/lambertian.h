@@ -7,9 +7,10 @@
 
 namespace rt {
 
-// The scattered ray of an ideal diffuse reflector: a cosine-weighted direction about the normal.
-// Draws 2 sampler dimensions.
-ray scatter_diffuse(const ray& r_in, const hit_record& rec, sampler& s);
+// What an ideal diffuse reflector of this albedo scatters: a cosine-weighted direction about
+// the normal, weighted by the albedo. Draws 2 sampler dimensions.
+scatter_sample scatter_diffuse(const ray& r_in, const hit_record& rec, sampler& s,
+                               const color& albedo);
 
 // [ch14 begin]
 // |cos| / pi of unit wi about the hit's normal on the side the ray came from; 0 below it. It is
@@ -23,13 +24,13 @@ class lambertian : public material {
     explicit lambertian(const color& albedo);
 
     // Draws 2 sampler dimensions: a cosine-weighted direction about the normal.
-    bool scatter(const ray& r_in, const hit_record& rec, sampler& s, color& attenuation,
-                 ray& scattered) const override;
+    std::optional<scatter_sample> scatter(const ray& r_in, const hit_record& rec,
+                                          sampler& s) const override;
 
     const color& albedo() const { return albedo_; }
 
     // [ch14 begin]
-    bool evaluable() const override { return true; }
+    lobe lobe_kind() const override { return lobe::evaluable; }
     color eval(const ray&, const hit_record& rec, const vec3& wi) const override {
         return albedo_ * diffuse_cosine_pdf(rec, wi);
     }

@@ -11,16 +11,14 @@ metal::metal(const color& a, real f) : albedo(a), fuzz(f) {
     require_in_range(f, 0, 1, "metal fuzz");
 }
 
-bool metal::scatter(const ray& r_in, const hit_record& rec, sampler& s, color& attenuation,
-                    ray& scattered) const {
+std::optional<scatter_sample> metal::scatter(const ray& r_in, const hit_record& rec,
+                                             sampler& s) const {
     sample2 ball_uv = s.next_2d();
     real ball_w     = s.next_1d();
     vec3 reflected  = unit_vector(reflect(r_in.direction(), rec.normal));
     vec3 direction  = reflected + fuzz * sample_uniform_ball(ball_uv, ball_w);
-    if (!(dot(direction, rec.normal) > 0)) return false;  // fuzzed under the surface
-    scattered   = rec.spawn_ray(r_in, direction);
-    attenuation = albedo;
-    return true;
+    if (!(dot(direction, rec.normal) > 0)) return std::nullopt;  // fuzzed under the surface
+    return scatter_sample{rec.spawn_ray(r_in, direction), albedo};
 }
 
 }  // namespace rt

@@ -13,8 +13,8 @@ class metal : public material {
     metal(const color& albedo, real fuzz);
 
     // Draws 3 sampler dimensions (a point in the unit ball), even for a perfect mirror.
-    bool scatter(const ray& r_in, const hit_record& rec, sampler& s, color& attenuation,
-                 ray& scattered) const override;
+    std::optional<scatter_sample> scatter(const ray& r_in, const hit_record& rec,
+                                          sampler& s) const override;
 
   private:
     color albedo;

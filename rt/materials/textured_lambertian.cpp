@@ -8,11 +8,9 @@ textured_lambertian::textured_lambertian(std::shared_ptr<texture> a) : albedo(st
     require_given(albedo, "lambertian albedo texture");
 }
 
-bool textured_lambertian::scatter(const ray& r_in, const hit_record& rec, sampler& s,
-                                  color& attenuation, ray& scattered) const {
-    scattered   = scatter_diffuse(r_in, rec, s);
-    attenuation = albedo->value_at(rec);
-    return true;
+std::optional<scatter_sample> textured_lambertian::scatter(const ray& r_in, const hit_record& rec,
+                                                           sampler& s) const {
+    return scatter_diffuse(r_in, rec, s, albedo->value_at(rec));
 }
 
 }  // namespace rt

@@ -15,11 +15,11 @@ class textured_lambertian : public material {
     explicit textured_lambertian(std::shared_ptr<texture> albedo);
 
     // Draws 2 sampler dimensions, as lambertian does.
-    bool scatter(const ray& r_in, const hit_record& rec, sampler& s, color& attenuation,
-                 ray& scattered) const override;
+    std::optional<scatter_sample> scatter(const ray& r_in, const hit_record& rec,
+                                          sampler& s) const override;
 
     // [ch14 begin]
-    bool evaluable() const override { return true; }
+    lobe lobe_kind() const override { return lobe::evaluable; }
     color eval(const ray&, const hit_record& rec, const vec3& wi) const override {
         return albedo->value_at(rec) * diffuse_cosine_pdf(rec, wi);
     }

@@ -13,11 +13,13 @@ isotropic::isotropic(std::shared_ptr<texture> a) : albedo(std::move(a)) {
     require_given(albedo, "isotropic albedo");
 }
 
-bool isotropic::scatter(const ray& r_in, const hit_record& rec, sampler& s, color& attenuation,
-                        ray& scattered) const {
-    scattered   = r_in.continued(rec.p, sample_uniform_sphere(s.next_2d()));
-    attenuation = albedo->value_at(rec);
-    return true;
+std::optional<scatter_sample> isotropic::scatter(const ray& r_in, const hit_record& rec,
+                                                 sampler& s) const {
+    scatter_sample sample{r_in.continued(rec.p, sample_uniform_sphere(s.next_2d())),
+                          albedo->value_at(rec)};
+    sample.from = lobe::evaluable;       // [ch14]
+    sample.pdf  = uniform_sphere_pdf();  // [ch14]
+    return sample;
 }
 
 // [ch14 begin]

@@ -15,12 +15,12 @@ class isotropic : public material {
     explicit isotropic(std::shared_ptr<texture> albedo);
 
     // Draws 2 sampler dimensions: a uniform direction on the sphere.
-    bool scatter(const ray& r_in, const hit_record& rec, sampler& s, color& attenuation,
-                 ray& scattered) const override;
+    std::optional<scatter_sample> scatter(const ray& r_in, const hit_record& rec,
+                                          sampler& s) const override;
 
     // [ch14 begin]
     // Every direction alike: f = albedo / (4 pi), no cosine (a medium has no surface).
-    bool evaluable() const override { return true; }
+    lobe lobe_kind() const override { return lobe::evaluable; }
     color eval(const ray& r_in, const hit_record& rec, const vec3& wi) const override;
     real pdf(const ray& r_in, const hit_record& rec, const vec3& wi) const override;
     // [ch14 end]

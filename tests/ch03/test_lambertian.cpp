@@ -41,9 +41,9 @@ TEST_CASE("lambertian: scattered directions lie in the hemisphere of the normal"
             auto rec = hit_at(point3(1, 2, 3), n, k % 2 == 0);
             rt::ray r_in(point3(0, 0, 0), -n);
             s.start_pixel_sample(sample, 0, 0);
-            color attenuation;
-            rt::ray scattered;
-            REQUIRE(mat.scatter(r_in, rec, s, attenuation, scattered));
+            const auto drawn = mat.scatter(r_in, rec, s);
+            REQUIRE(drawn);
+            const rt::ray& scattered = drawn->scattered;
             // The density cos/pi vanishes at the horizon, so every sample is strictly above it.
             if (!(dot(scattered.direction(), n) > 0)) ++below;
             // Spawned on the normal's side, by hit_record::spawn_reflected_ray.
@@ -68,12 +68,13 @@ TEST_CASE("lambertian: the mean cosine to the normal is 2/3, as for density cos(
     int absorbed = 0;
     for (int k = 0; k < 100000; ++k) {
         s.start_pixel_sample(k, 1, 0);
-        color attenuation;
-        rt::ray scattered;
-        if (!mat.scatter(rt::ray(point3(0, 0, 0), -n), hit_at(point3(0, 0, 0), n, true), s,
-                         attenuation, scattered))
+        const auto sample =
+            mat.scatter(rt::ray(point3(0, 0, 0), -n), hit_at(point3(0, 0, 0), n, true), s);
+        if (!sample) {
             ++absorbed;
-        cosines.add(double(dot(rt::unit_vector(scattered.direction()), n)));
+            continue;
+        }
+        cosines.add(double(dot(rt::unit_vector(sample->scattered.direction()), n)));
     }
     CHECK(absorbed == 0);
     auto check = rt_test::mean_within_tolerance(cosines.estimate(), 2.0 / 3.0, 5);
@@ -81,19 +82,17 @@ TEST_CASE("lambertian: the mean cosine to the normal is 2/3, as for density cos(
     CHECK(check.passed);
 }
 
-TEST_CASE("lambertian: the attenuation is exactly the albedo", "[ch03]") {
+TEST_CASE("lambertian: the weight is exactly the albedo", "[ch03]") {
     rt::independent_sampler s(9);
     for (const color& albedo : {color(0.6, 0.6, 0.6), color(0.1, 0.2, 0.5), color(0, 1, 0.3)}) {
         rt::lambertian mat(albedo);
         for (int k = 0; k < 100; ++k) {
             s.start_pixel_sample(k, 2, 0);
-            color attenuation;
-            rt::ray scattered;
-            REQUIRE(mat.scatter(rt::ray(point3(0, 0, 1), vec3(0, 0, -1)),
-                                hit_at(point3(0, 0, 0), vec3(0, 0, 1), true), s, attenuation,
-                                scattered));
-            INFO("albedo " << albedo << ", attenuation " << attenuation);
-            REQUIRE(exactly(attenuation, albedo));
+            const auto sample = mat.scatter(rt::ray(point3(0, 0, 1), vec3(0, 0, -1)),
+                                            hit_at(point3(0, 0, 0), vec3(0, 0, 1), true), s);
+            REQUIRE(sample);
+            INFO("albedo " << albedo << ", weight " << sample->weight);
+            REQUIRE(exactly(sample->weight, albedo));
         }
     }
 }
@@ -131,13 +130,12 @@ TEST_CASE("lambertian: scatter draws exactly 2 sampler dimensions, as scatter_di
         rt::independent_sampler s(21), copy(21);
         s.start_pixel_sample(k, 0, 0);
         copy.start_pixel_sample(k, 0, 0);
-        color attenuation;
-        rt::ray scattered;
-        REQUIRE(mat.scatter(r_in, rec, s, attenuation, scattered));
-        const rt::ray diffuse = rt::scatter_diffuse(r_in, rec, copy);
+        const auto sample = mat.scatter(r_in, rec, s);
+        REQUIRE(sample);
+        const rt::ray diffuse = rt::scatter_diffuse(r_in, rec, copy, color(1, 1, 1)).scattered;
         if (s.next_1d() != rt_test::next_after_draws(21, k, 0, 0, 2)) ++drew_wrong;
-        if (!exactly(scattered.origin(), diffuse.origin()) ||
-            !exactly(scattered.direction(), diffuse.direction()))
+        if (!exactly(sample->scattered.origin(), diffuse.origin()) ||
+            !exactly(sample->scattered.direction(), diffuse.direction()))
             ++differ;
     }
     CHECK(drew_wrong == 0);

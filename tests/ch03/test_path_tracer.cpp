@@ -116,9 +116,9 @@ std::shared_ptr<rt::hittable> gray_quad(const point3& Q, const vec3& u, const ve
 // A material that absorbs every ray, having drawn nothing.
 class absorber : public rt::material {
   public:
-    bool scatter(const rt::ray&, const rt::hit_record&, rt::sampler&, color&,
-                 rt::ray&) const override {
-        return false;
+    std::optional<rt::scatter_sample> scatter(const rt::ray&, const rt::hit_record&,
+                                              rt::sampler&) const override {
+        return std::nullopt;
     }
 };
 

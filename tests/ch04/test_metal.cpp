@@ -33,10 +33,11 @@ TEST_CASE("metal: fuzz 0 is a perfect mirror weighted by the albedo", "[ch04]") 
     auto rec = hit_unit_sphere(mirror, in);
     rt::independent_sampler s(3);
     s.start_pixel_sample(0, 0, 0);
-    color attenuation;
-    rt::ray out;
-    REQUIRE(mirror->scatter(in, rec, s, attenuation, out));
-    vec3 expected = rt::unit_vector(rt::reflect(in.direction(), rec.normal));
+    const auto sample = mirror->scatter(in, rec, s);
+    REQUIRE(sample);
+    const rt::ray& out       = sample->scattered;
+    const color& attenuation = sample->weight;
+    vec3 expected            = rt::unit_vector(rt::reflect(in.direction(), rec.normal));
     CHECK(rt::unit_vector(out.direction()).x() == Approx(expected.x()).margin(1e-6));
     CHECK(rt::unit_vector(out.direction()).y() == Approx(expected.y()).margin(1e-6));
     CHECK(attenuation.x() == Approx(0.9));
@@ -54,10 +55,8 @@ TEST_CASE("metal: fuzzed rays never leave below the surface", "[ch04]") {
     int absorbed = 0;
     for (int k = 0; k < 10000; ++k) {
         s.start_pixel_sample(0, 0, k);
-        color attenuation;
-        rt::ray out;
-        if (brushed->scatter(in, rec, s, attenuation, out))
-            CHECK(dot(out.direction(), rec.normal) > 0);
+        if (const auto sample = brushed->scatter(in, rec, s))
+            CHECK(dot(sample->scattered.direction(), rec.normal) > 0);
         else
             ++absorbed;
     }
@@ -75,9 +74,7 @@ TEST_CASE("metal: scatter draws exactly 3 sampler dimensions, even as a perfect 
         for (int k = 0; k < 100; ++k) {
             rt::independent_sampler s(8);
             s.start_pixel_sample(k, 0, 0);
-            color attenuation;
-            rt::ray out;
-            mat->scatter(in, rec, s, attenuation, out);
+            (void)mat->scatter(in, rec, s);
             if (s.next_1d() != rt_test::next_after_draws(8, k, 0, 0, 3)) ++wrong;
         }
     }

@@ -39,11 +39,10 @@ TEST_CASE("dielectric: head-on rays mostly refract, with probability 1 - R0", "[
         int reflected = 0, not_clear = 0;
         for (int k = 0; k < n; ++k) {
             s.start_pixel_sample(0, 0, k);
-            color attenuation;
-            rt::ray out;
-            REQUIRE(glass->scatter(in, rec, s, attenuation, out));
-            if (!rt_test::exactly(attenuation, color(1, 1, 1))) ++not_clear;
-            if (out.direction().z() > 0) ++reflected;
+            const auto sample = glass->scatter(in, rec, s);
+            REQUIRE(sample);
+            if (!rt_test::exactly(sample->weight, color(1, 1, 1))) ++not_clear;
+            if (sample->scattered.direction().z() > 0) ++reflected;
         }
         INFO((model == rt::fresnel_model::exact ? "exact" : "schlick")
              << ": " << reflected << " of " << n << " reflected");
@@ -71,10 +70,9 @@ TEST_CASE("dielectric: an oblique ray reflects with the model's probability", "[
         int reflected = 0;
         for (int k = 0; k < n; ++k) {
             s.start_pixel_sample(1, 0, k);
-            color attenuation;
-            rt::ray out;
-            REQUIRE(glass->scatter(in, rec, s, attenuation, out));
-            if (dot(out.direction(), rec.normal) > 0) ++reflected;
+            const auto sample = glass->scatter(in, rec, s);
+            REQUIRE(sample);
+            if (dot(sample->scattered.direction(), rec.normal) > 0) ++reflected;
         }
         INFO("cos_i " << cos_i << ", reflectance " << p << ", " << reflected << " of " << n
                       << " reflected");
@@ -106,11 +104,11 @@ TEST_CASE("dielectric: total internal reflection inside glass reflects, no NaN",
         rt::independent_sampler s(2);
         for (int k = 0; k < 1000; ++k) {
             s.start_pixel_sample(0, 0, k);
-            color attenuation;
-            rt::ray out;
-            REQUIRE(glass->scatter(in, rec, s, attenuation, out));
-            CHECK(std::isfinite(out.direction().x()));
-            CHECK(dot(out.direction(), rec.normal) > 0);  // stays inside: reflected every time
+            const auto sample = glass->scatter(in, rec, s);
+            REQUIRE(sample);
+            CHECK(std::isfinite(sample->scattered.direction().x()));
+            CHECK(dot(sample->scattered.direction(), rec.normal) >
+                  0);  // stays inside: reflected every time
         }
     }
 }
@@ -128,9 +126,7 @@ TEST_CASE("dielectric: scatter draws exactly 1 sampler dimension", "[ch05]") {
         for (int k = 0; k < 100; ++k) {
             rt::independent_sampler s(4);
             s.start_pixel_sample(k, 0, 0);
-            color attenuation;
-            rt::ray out;
-            glass->scatter(in, rec, s, attenuation, out);
+            (void)glass->scatter(in, rec, s);
             if (s.next_1d() != rt_test::next_after_draws(4, k, 0, 0, 1)) ++wrong;
         }
     }

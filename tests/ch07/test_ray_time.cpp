@@ -27,10 +27,9 @@ TEST_CASE("ray: a scattered ray keeps the instant of the ray that arrived", "[ra
     const rt::ray arriving(rt::point3(0, 1, 0), rt::vec3(0, -1, 0), rt::real(0.75));
     rt::independent_sampler s(1);
     s.start_pixel_sample(0, 0, 0);
-    rt::color attenuation;
-    rt::ray scattered;
-    REQUIRE(matte.scatter(arriving, rec, s, attenuation, scattered));
-    CHECK(scattered.time() == rt::real(0.75));
+    const auto sample = matte.scatter(arriving, rec, s);
+    REQUIRE(sample);
+    CHECK(sample->scattered.time() == rt::real(0.75));
 }
 
 TEST_CASE("thin_lens_camera: with the shutter closed, rays are at instant 0 and draw no time",

@@ -56,13 +56,14 @@ TEST_CASE("textured_lambertian: the attenuation is the texture's value at (u, v,
         const rt::ray r_in(p + n, -n, 0.5);
         s.start_pixel_sample(k, 3, 0);
         rt::independent_sampler same = s;
-        color attenuation, plain_attenuation;
-        rt::ray scattered, plain_scattered;
-        REQUIRE(mat.scatter(r_in, rec, s, attenuation, scattered));
-        if (!exactly(attenuation, texture->value(u, v, rec.p))) ++wrong;
+        const auto sample            = mat.scatter(r_in, rec, s);
+        REQUIRE(sample);
+        if (!exactly(sample->weight, texture->value(u, v, rec.p))) ++wrong;
         // The same draws make the same ray as the untextured material, and leave the sampler
         // at the same place.
-        REQUIRE(plain.scatter(r_in, rec, same, plain_attenuation, plain_scattered));
+        const auto plain_sample = plain.scatter(r_in, rec, same);
+        REQUIRE(plain_sample);
+        const rt::ray &scattered = sample->scattered, &plain_scattered = plain_sample->scattered;
         if (!exactly(scattered.origin(), plain_scattered.origin()) ||
             !exactly(scattered.direction(), plain_scattered.direction()) ||
             scattered.time() != r_in.time() || s.next_1d() != same.next_1d())
@@ -76,12 +77,11 @@ TEST_CASE("textured_lambertian: the attenuation is the texture's value at (u, v,
         1, color(0.875, 0.875, 0.875), color(0.25, 0.375, 0.125)));
     for (const auto& [p, want] : {std::pair(point3(0.5, 0.5, 0.5), color(0.875, 0.875, 0.875)),
                                   std::pair(point3(1.5, 0.5, 0.5), color(0.25, 0.375, 0.125))}) {
-        color attenuation;
-        rt::ray scattered;
         s.start_pixel_sample(0, 4, 0);
-        REQUIRE(checkered.scatter(rt::ray(p + vec3(0, 0, 1), vec3(0, 0, -1)),
-                                  hit_at(p, vec3(0, 0, 1), true), s, attenuation, scattered));
-        CHECK(exactly(attenuation, want));
+        const auto sample = checkered.scatter(rt::ray(p + vec3(0, 0, 1), vec3(0, 0, -1)),
+                                              hit_at(p, vec3(0, 0, 1), true), s);
+        REQUIRE(sample);
+        CHECK(exactly(sample->weight, want));
     }
     CHECK_THROWS_AS(rt::textured_lambertian(std::shared_ptr<rt::texture>()), rt::user_error);
     CHECK_THROWS_WITH(rt::textured_lambertian(nullptr), Catch::Contains("texture is missing"));

@@ -527,12 +527,9 @@ TEST_CASE("instance: a textured sphere turned and moved keeps the (u, v) of its 
                     (std::min(du, 1 - du) > tolerance || std::fabs(at_point.v - uv.v) > tolerance))
                     ++elsewhere;
                 // The material looks its texture up at those coordinates.
-                color attenuation;
-                rt::ray scattered;
                 s.start_pixel_sample(k, 0, 0);
-                if (!rec.mat->scatter(r, rec, s, attenuation, scattered) ||
-                    !exactly(attenuation, color(uv.u, uv.v, 0)))
-                    ++wrong_color;
+                const auto sample = rec.mat->scatter(r, rec, s);
+                if (!sample || !exactly(sample->weight, color(uv.u, uv.v, 0))) ++wrong_color;
                 // Coordinates taken in the world frame would differ wherever the turn moves the
                 // point (not for a turn by 0, nor on the axis of the turn).
                 if (deg != 0) {

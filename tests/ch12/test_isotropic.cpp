@@ -44,14 +44,15 @@ TEST_CASE("isotropic: scattered directions are uniform on the sphere, weighted b
         vec3 in_dir = rt::sample_uniform_sphere({u, incoming.uniform()});
         rt::ray r_in(point3(0, 0, 0), 3 * in_dir, 0.625);
         rt::hit_record rec;
-        rec.p = point3(1, -2, 3);
-        color attenuation;
-        rt::ray out;
+        rec.p                          = point3(1, -2, 3);
         rt::independent_sampler replay = s;
-        if (!phase.scatter(r_in, rec, s, attenuation, out)) {
+        const auto sample              = phase.scatter(r_in, rec, s);
+        if (!sample) {
             ++wrong;
             continue;
         }
+        const rt::ray& out       = sample->scattered;
+        const color& attenuation = sample->weight;
         // It starts exactly at the scattering point (a medium has no surface to leave), keeps
         // the time, is unit length to rounding and weighs exactly the albedo. It draws 2
         // dimensions: the sampler is left where two draws leave it.

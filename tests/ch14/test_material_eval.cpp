@@ -1,10 +1,11 @@
-// Tests for chapter 14's additions to material.h: a material that can be evaluated (lambertian,
+// Tests for chapter 14's additions to material.h: a material with an evaluable lobe (lambertian,
 // textured_lambertian, isotropic) gives f |cos| for any direction (eval) and the solid-angle
 // density with which its scatter() draws a direction (pdf). So for the direction scatter() drew,
-// its weight must be eval / pdf; its directions must follow pdf() (chi-square over the whole
-// sphere of directions, ch14/direction_checks.h), and pdf() must integrate to 1. A diffuse
-// reflector sends nothing below its surface (eval and pdf 0 there). Metal, glass and lights
-// cannot be evaluated and say so.
+// its weight must be eval / pdf, and the density the sample brings must be pdf()'s; its
+// directions must follow pdf() (chi-square over the whole sphere of directions,
+// ch14/direction_checks.h), and pdf() must integrate to 1. A diffuse reflector sends nothing
+// below its surface (eval and pdf 0 there). Metal, glass and lights are only sampled, and say so
+// before and in every sample.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
@@ -82,32 +83,39 @@ TEST_CASE("evaluable materials: the sampled weight is eval / pdf of the directio
           "[ch14]") {
     for (const auto& m : evaluable_materials()) {
         INFO(m.name);
-        REQUIRE(m.mat->evaluable());
+        REQUIRE(m.mat->lobe_kind() == rt::lobe::evaluable);
         rt::independent_sampler s(61);
-        int wrong = 0, no_density = 0, n = 0;
+        int wrong = 0, no_density = 0, other_density = 0, n = 0;
         for (const rt::hit_record& rec : hits()) {
             const rt::ray r_in = incoming(rec);
             for (int k = 0; k < 4000; ++k, ++n) {
                 s.start_pixel_sample(n, 5, 0);
-                color attenuation;
-                rt::ray scattered;
-                REQUIRE(m.mat->scatter(r_in, rec, s, attenuation, scattered));
-                const vec3 wi = rt::unit_vector(scattered.direction());
+                const auto sample = m.mat->scatter(r_in, rec, s);
+                REQUIRE(sample);
+                const vec3 wi = rt::unit_vector(sample->scattered.direction());
                 const real p  = m.mat->pdf(r_in, rec, wi);
                 if (!(p > 0)) {
                     ++no_density;
                     continue;
                 }
+                // The density the sample brings is pdf()'s for its direction, to rounding: it
+                // comes from the sampled cosine in the local frame, pdf() from a dot product
+                // with the normal, whose error is absolute (a few eps), not relative.
+                const real eps = std::numeric_limits<real>::epsilon();
+                if (sample->from != rt::lobe::evaluable ||
+                    !(std::fabs(sample->pdf - p) <= 16 * eps * (p + 1 / real(pi))))
+                    ++other_density;
                 const color weight = m.mat->eval(r_in, rec, wi) / p;
-                if (!close(attenuation, weight)) {
+                if (!close(sample->weight, weight)) {
                     if (wrong < 3)
-                        UNSCOPED_INFO("normal " << rec.normal << ", wi " << wi << ": attenuation "
-                                                << attenuation << ", eval / pdf " << weight);
+                        UNSCOPED_INFO("normal " << rec.normal << ", wi " << wi << ": weight "
+                                                << sample->weight << ", eval / pdf " << weight);
                     ++wrong;
                 }
             }
         }
         CHECK(no_density == 0);  // scatter() drew a direction pdf() says it never draws
+        CHECK(other_density == 0);
         CHECK(wrong == 0);
     }
 }
@@ -126,10 +134,9 @@ TEST_CASE("evaluable materials: directions follow pdf(), which integrates to 1 o
             int k     = 0;
             auto draw = [&](rt::pcg32&, vec3& wi, real& pdf) {
                 s.start_pixel_sample(k++, 0, 0);
-                color attenuation;
-                rt::ray scattered;
-                if (!m.mat->scatter(r_in, rec, s, attenuation, scattered)) return false;
-                wi  = rt::unit_vector(scattered.direction());
+                const auto sample = m.mat->scatter(r_in, rec, s);
+                if (!sample) return false;
+                wi  = rt::unit_vector(sample->scattered.direction());
                 pdf = m.mat->pdf(r_in, rec, wi);
                 return true;
             };
@@ -150,9 +157,9 @@ TEST_CASE("evaluable materials: eval is f |cos|, and a diffuse surface sends not
             // The albedo the material reports through scatter() at this hit.
             rt::independent_sampler s(3);
             s.start_pixel_sample(0, 0, 0);
-            color albedo;
-            rt::ray scattered;
-            REQUIRE(m.mat->scatter(r_in, rec, s, albedo, scattered));
+            const auto sample = m.mat->scatter(r_in, rec, s);
+            REQUIRE(sample);
+            const color albedo = sample->weight;
             for (int k = 0; k < 500; ++k) {
                 const vec3 wi  = rt_test::random_unit(rng);
                 const double c = double(dot(wi, rec.normal));
@@ -179,7 +186,8 @@ TEST_CASE("evaluable materials: eval is f |cos|, and a diffuse surface sends not
     CHECK(wrong == 0);
 }
 
-TEST_CASE("metal, glass and lights cannot be evaluated: they are only sampled", "[ch14]") {
+TEST_CASE("metal, glass and lights cannot be evaluated: they are only sampled, and say so",
+          "[ch14]") {
     const rt::metal mirror(color(0.8, 0.8, 0.8), 0), fuzzy(color(0.8, 0.6, 0.2), real(0.3));
     const rt::dielectric glass(real(1.5));
     const rt::diffuse_light lamp(color(4, 4, 4));
@@ -188,7 +196,16 @@ TEST_CASE("metal, glass and lights cannot be evaluated: they are only sampled", 
     for (const rt::material* m :
          {static_cast<const rt::material*>(&mirror), static_cast<const rt::material*>(&fuzzy),
           static_cast<const rt::material*>(&glass), static_cast<const rt::material*>(&lamp)}) {
-        CHECK_FALSE(m->evaluable());
+        CHECK(m->lobe_kind() == rt::lobe::sampled_only);
+        // Their samples say the same, with no density.
+        rt::independent_sampler s(62);
+        for (int k = 0; k < 100; ++k) {
+            s.start_pixel_sample(k, 0, 0);
+            if (const auto sample = m->scatter(r_in, rec, s)) {
+                CHECK(sample->from == rt::lobe::sampled_only);
+                CHECK(sample->pdf == 0);
+            }
+        }
         // What they would answer if asked anyway: nothing, not garbage.
         CHECK(m->pdf(r_in, rec, vec3(0, 0, 1)) == 0);
         CHECK(rt_test::exactly(m->eval(r_in, rec, vec3(0, 0, 1)), color(0, 0, 0)));
