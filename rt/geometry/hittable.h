@@ -48,24 +48,6 @@ struct hit_record {
         front_face = dot(r.direction(), outward_normal) < 0;
         normal     = front_face ? outward_normal : -outward_normal;
     }
-
-    // [ch03 begin]
-    // The next segment of r_in's path, leaving this hit in `direction`. Why not the book's
-    // t > 0.001: that constant is too big for tiny objects and too small for huge or distant
-    // ones. Instead the origin moves along the normal, to the side the new ray leaves by, farther
-    // than the error bound of p. From there a convex surface (sphere, quad) cannot be re-hit near
-    // t = 0, at any scale. See test_spawn_ray.
-    ray spawn_ray(const ray& r_in, const vec3& direction) const {
-        if (dot(direction, normal) > 0) return spawn_reflected_ray(r_in, direction);
-        return r_in.continued(p - p_error * normal, direction);
-    }
-
-    // A ray known to leave on the side the normal faces (a reflection), even when it grazes the
-    // tangent plane and rounding puts dot(direction, normal) at 0 or just below.
-    ray spawn_reflected_ray(const ray& r_in, const vec3& direction) const {
-        return r_in.continued(p + p_error * normal, direction);
-    }
-    // [ch03 end]
 };
 
 // [ch14 begin]

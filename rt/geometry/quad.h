@@ -20,10 +20,10 @@ struct quad_shape {
     real D;       // plane offset: n.P = D
 };
 
-// The hit of r with the parallelogram inside ray_t: fills rec's t, p, p_error, normal,
-// front_face and local (the caller adds the material and the object), or returns false and
-// leaves rec unchanged. Inline so that a BVH leaf (chapter 07) tests its quads without a
-// virtual call each.
+// The hit of r with the parallelogram inside ray_t: fills rec's t, p, p_error, normal and
+// front_face (quad::hit adds the material), or returns false and leaves rec unchanged. A function
+// of the shape's fields, not a member, so that chapter 17's BVH leaves can test quads kept as
+// arrays of those fields, inlined, without a virtual call each.
 inline bool hit_quad(const quad_shape& s, const ray& r, interval ray_t, hit_record& rec) {
     real denom = dot(s.normal, r.direction());
     if (denom == 0) return false;  // parallel to the plane: no single hit point
@@ -42,7 +42,7 @@ inline bool hit_quad(const quad_shape& s, const ray& r, interval ray_t, hit_reco
     rec.p       = p - (dot(s.normal, p) - s.D) * s.normal;
     rec.p_error = spawn_offset_scale * (max_abs_component(rec.p) + std::fabs(s.D));
     rec.set_face_normal(r, s.normal);
-    rec.local = vec3(alpha, beta, 0);  // [ch08]
+    rec.local = vec3(alpha, beta, 0);  // [ch08] the plane coordinates, for textures
     return true;
 }
 
@@ -58,12 +58,12 @@ class quad : public hittable {
     surface_uv uv_at(const vec3& local) const override { return {local.x(), local.y()}; }
     // [ch08 end]
 
-    // The corner and the two edges.
+    // The corner and the two edges; all that the hit test reads, precomputed; the material.
     const point3& corner() const { return shape_.Q; }
     const vec3& edge_u() const { return shape_.u; }
     const vec3& edge_v() const { return shape_.v; }
-    const quad_shape& shape() const { return shape_; }                // [ch07] for BVH leaves
-    const std::shared_ptr<material>& surface() const { return mat; }  // [ch14]
+    const quad_shape& shape() const { return shape_; }
+    const std::shared_ptr<material>& surface() const { return mat; }
 
   private:
     quad_shape shape_;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "rt/core/validate.h"
+#include "rt/geometry/spawn_ray.h"
 #include "rt/materials/material.h"
 #include "rt/render/ray_count.h"
 
@@ -31,7 +32,7 @@ mis_tracer::mis_tracer(std::shared_ptr<const hittable> w, const background& b)
 
 real mis_tracer::visibility(const ray& r_in, const hit_record& rec,
                             const light_sample& towards) const {
-    ray shadow = rec.spawn_ray(r_in, towards.wi);
+    ray shadow = spawn_ray(rec, r_in, towards.wi);
     if (towards.at_infinity) return world->transmittance(shadow, interval(0, infinity));
     // End just short of the light: its point moved off its surface, towards us, by its own
     // error bound, so the light itself never blocks the ray that reaches it.

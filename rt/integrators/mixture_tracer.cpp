@@ -1,6 +1,7 @@
 #include "rt/integrators/mixture_tracer.h"
 
 #include "rt/core/validate.h"
+#include "rt/geometry/spawn_ray.h"
 #include "rt/materials/material.h"
 #include "rt/render/ray_count.h"
 
@@ -58,7 +59,7 @@ color mixture_tracer::radiance(const ray& camera_ray, sampler& s, int max_depth)
         color f  = surface.eval(r, rec, wi);
         if (!(pdf > 0) || is_black(f)) break;  // below the surface: no light comes that way
         throughput = throughput * f / pdf;
-        r          = rec.spawn_ray(r, wi);
+        r          = spawn_ray(rec, r, wi);
     }
     return radiance;
 }

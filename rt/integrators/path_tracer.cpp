@@ -18,7 +18,7 @@ color path_tracer::radiance(const ray& camera_ray, sampler& s, int max_depth) co
     for (int segment = 0; segment < max_depth; ++segment) {
         hit_record rec;
         count_ray();
-        // Spawned rays start off their surface (hit_record::spawn_ray), so any t > 0 is a real hit.
+        // Spawned rays start off their surface (spawn_ray), so any t > 0 is a real hit.
         if (!world->hit(r, interval(0, infinity), rec)) {
             radiance += throughput * sky.radiance(r.direction());
             break;

@@ -3,7 +3,9 @@
 #include <cmath>
 
 #include "rt/core/validate.h"
+#include "rt/geometry/spawn_ray.h"
 #include "rt/materials/optics.h"
+#include "rt/materials/refraction.h"
 
 namespace rt {
 
@@ -27,7 +29,7 @@ std::optional<scatter_sample> dielectric::scatter(const ray& r_in, const hit_rec
         total_internal_reflection(cos_theta, eta) || reflectance(cos_theta, eta) > choice;
     vec3 direction = reflects ? reflect(unit_dir, rec.normal) : refract(unit_dir, rec.normal, eta);
 
-    return scatter_sample{rec.spawn_ray(r_in, direction),
+    return scatter_sample{spawn_ray(rec, r_in, direction),
                           color(1, 1, 1)};  // clear: absorbs nothing
 }
 

@@ -9,7 +9,7 @@
 
 namespace rt {
 
-// How the reflectance is computed (optics.h): Schlick's approximation (the book's choice, with
+// How the reflectance is computed (refraction.h): Schlick's approximation (the book's choice, with
 // the cosine taken on the less dense side) or the exact Fresnel equations.
 enum class fresnel_model { schlick, exact };
 

@@ -2,6 +2,7 @@
 
 #include "rt/core/onb.h"
 #include "rt/core/validate.h"
+#include "rt/geometry/spawn_ray.h"
 #include "rt/samplers/sampling.h"
 
 namespace rt {
@@ -11,7 +12,7 @@ scatter_sample scatter_diffuse(const ray& r_in, const hit_record& rec, sampler& 
     // The book's normal + random_unit_vector() has this same cosine density; sampling it in a
     // local frame needs no rejection loop and no degenerate-direction fix-up.
     const vec3 local = sample_cosine_hemisphere(s.next_2d());
-    scatter_sample sample{rec.spawn_reflected_ray(r_in, onb(rec.normal).to_world(local)), albedo};
+    scatter_sample sample{spawn_reflected_ray(rec, r_in, onb(rec.normal).to_world(local)), albedo};
     sample.from = lobe::evaluable;                   // [ch14]
     sample.pdf  = cosine_hemisphere_pdf(local.z());  // [ch14] the cosine, from the local frame
     return sample;

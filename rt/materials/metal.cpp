@@ -1,6 +1,7 @@
 #include "rt/materials/metal.h"
 
 #include "rt/core/validate.h"
+#include "rt/geometry/spawn_ray.h"
 #include "rt/materials/optics.h"
 #include "rt/samplers/sampling.h"
 
@@ -18,7 +19,7 @@ std::optional<scatter_sample> metal::scatter(const ray& r_in, const hit_record& 
     vec3 reflected  = unit_vector(reflect(r_in.direction(), rec.normal));
     vec3 direction  = reflected + fuzz * sample_uniform_ball(ball_uv, ball_w);
     if (!(dot(direction, rec.normal) > 0)) return std::nullopt;  // fuzzed under the surface
-    return scatter_sample{rec.spawn_ray(r_in, direction), albedo};
+    return scatter_sample{spawn_ray(rec, r_in, direction), albedo};
 }
 
 }  // namespace rt

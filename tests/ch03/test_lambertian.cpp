@@ -46,7 +46,7 @@ TEST_CASE("lambertian: scattered directions lie in the hemisphere of the normal"
             const rt::ray& scattered = drawn->scattered;
             // The density cos/pi vanishes at the horizon, so every sample is strictly above it.
             if (!(dot(scattered.direction(), n) > 0)) ++below;
-            // Spawned on the normal's side, by hit_record::spawn_reflected_ray.
+            // Spawned on the normal's side, by spawn_reflected_ray.
             if (!exactly(scattered.origin(), rec.p + rec.p_error * n)) ++wrong_origin;
         }
         INFO("normal " << n << ": " << below << " of 5000 below the horizon, " << wrong_origin

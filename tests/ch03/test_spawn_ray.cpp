@@ -1,4 +1,4 @@
-// Tests for hit_record::spawn_ray (hittable.h): rays leaving a surface never hit it again by
+// Tests for spawn_ray (spawn_ray.h): rays leaving a surface never hit it again by
 // mistake, at any scale (chapter 03). After pbrt-v4's robustness tests, which re-intersect
 // spawned rays over radii 1e-4..1e4 and expect zero self-hits.
 //
@@ -21,6 +21,7 @@
 #include "ch03/material_helpers.h"
 #include "rt/core/rng.h"
 #include "rt/geometry/quad.h"
+#include "rt/geometry/spawn_ray.h"
 #include "rt/geometry/sphere.h"
 #include "test_helpers.h"
 
@@ -122,7 +123,7 @@ TEST_CASE(
         // Out: convex, so never again.
         vec3 out = scale * random_in_hemisphere(rng, rec.normal);
         ++outward.cases;
-        if (s.hit(rec.spawn_ray(incoming, out), forward, again))
+        if (s.hit(rt::spawn_ray(rec, incoming, out), forward, again))
             outward.fail(where() + ": re-hit at t " + std::to_string(again.t));
 
         // In: only the far side, at the chord's length 2 r cos(theta). Its error budget is the
@@ -137,7 +138,7 @@ TEST_CASE(
         real chord     = 2 * radius * cos_theta;
         real tolerance = real(1e-9) * chord + 3 * rec.p_error / cos_theta;
         ++inward.cases;
-        if (!s.hit(rec.spawn_ray(incoming, in), forward, again)) {
+        if (!s.hit(rt::spawn_ray(rec, incoming, in), forward, again)) {
             inward.fail(where() + ": went in and never came out");
         } else {
             real travelled = again.t * in.length();
@@ -163,12 +164,12 @@ TEST_CASE(
         vec3 along = scale * random_tangent(rng, rec.normal);
         if (dot(along, rec.normal) > 0) {
             ++tangent_out.cases;
-            if (s.hit(rec.spawn_ray(incoming, along), forward, again))
+            if (s.hit(rt::spawn_ray(rec, incoming, along), forward, again))
                 tangent_out.fail(where() + ": tangent ray re-hit");
         } else {
             ++tangent_in.cases;
             real half_chord = std::sqrt(2 * radius * rec.p_error);
-            if (!s.hit(rec.spawn_ray(incoming, along), forward, again)) {
+            if (!s.hit(rt::spawn_ray(rec, incoming, along), forward, again)) {
                 tangent_in.fail(where() + ": tangent ray went in and never came out");
             } else {
                 real ratio = again.t * along.length() / half_chord;
@@ -248,15 +249,16 @@ TEST_CASE(
         rt::hit_record again;
 
         ++same_side.cases;
-        if (q.hit(rec.spawn_ray(incoming, scale * random_in_hemisphere(rng, rec.normal)), forward,
-                  again))
+        if (q.hit(rt::spawn_ray(rec, incoming, scale * random_in_hemisphere(rng, rec.normal)),
+                  forward, again))
             same_side.fail(where() + ": re-hit at t " + std::to_string(again.t));
         ++through.cases;
-        if (q.hit(rec.spawn_ray(incoming, scale * random_in_hemisphere(rng, -rec.normal)), forward,
-                  again))
+        if (q.hit(rt::spawn_ray(rec, incoming, scale * random_in_hemisphere(rng, -rec.normal)),
+                  forward, again))
             through.fail(where() + ": re-hit at t " + std::to_string(again.t));
         ++along_plane.cases;
-        if (q.hit(rec.spawn_ray(incoming, scale * random_tangent(rng, rec.normal)), forward, again))
+        if (q.hit(rt::spawn_ray(rec, incoming, scale * random_tangent(rng, rec.normal)), forward,
+                  again))
             along_plane.fail(where() + ": re-hit at t " + std::to_string(again.t));
     }
 
@@ -280,19 +282,19 @@ TEST_CASE("spawn_ray: the origin moves p_error along the normal, to the side the
     const rt::ray incoming(point3(1, 2, 10), vec3(0, 0, -1));
     const point3 above(1, 2, 3 + real(1) / 64), below(1, 2, 3 - real(1) / 64);
 
-    const rt::ray out = rec.spawn_ray(incoming, vec3(1, 0, 1));
+    const rt::ray out = rt::spawn_ray(rec, incoming, vec3(1, 0, 1));
     CHECK(rt_test::exactly(out.origin(), above));
     CHECK(rt_test::exactly(out.direction(), vec3(1, 0, 1)));  // as given, not normalized
-    const rt::ray in = rec.spawn_ray(incoming, vec3(0, -1, -3));
+    const rt::ray in = rt::spawn_ray(rec, incoming, vec3(0, -1, -3));
     CHECK(rt_test::exactly(in.origin(), below));
     CHECK(rt_test::exactly(in.direction(), vec3(0, -1, -3)));
     // Exactly in the tangent plane the ray is taken to go in: it may only leave by reflecting.
-    CHECK(rt_test::exactly(rec.spawn_ray(incoming, vec3(1, 1, 0)).origin(), below));
+    CHECK(rt_test::exactly(rt::spawn_ray(rec, incoming, vec3(1, 1, 0)).origin(), below));
 
     // spawn_reflected_ray trusts the caller: on the normal's side even when the direction says
     // otherwise by a rounding error (a reflection that grazes the surface).
-    CHECK(rt_test::exactly(rec.spawn_reflected_ray(incoming, vec3(1, 0, 0)).origin(), above));
-    CHECK(rt_test::exactly(rec.spawn_reflected_ray(incoming, vec3(1, 0, real(-1e-17))).origin(),
-                           above));
-    CHECK(rt_test::exactly(rec.spawn_reflected_ray(incoming, vec3(1, 0, 1)).origin(), above));
+    CHECK(rt_test::exactly(rt::spawn_reflected_ray(rec, incoming, vec3(1, 0, 0)).origin(), above));
+    CHECK(rt_test::exactly(
+        rt::spawn_reflected_ray(rec, incoming, vec3(1, 0, real(-1e-17))).origin(), above));
+    CHECK(rt_test::exactly(rt::spawn_reflected_ray(rec, incoming, vec3(1, 0, 1)).origin(), above));
 }

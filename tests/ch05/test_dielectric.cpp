@@ -11,6 +11,7 @@
 #include "rt/geometry/sphere.h"
 #include "rt/materials/dielectric.h"
 #include "rt/materials/optics.h"
+#include "rt/materials/refraction.h"
 #include "rt/samplers/independent_sampler.h"
 #include "test_helpers.h"
 

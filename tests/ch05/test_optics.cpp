@@ -1,12 +1,13 @@
-// The optics of chapter 05 (rt/materials/optics.h): Snell refraction, total internal reflection, and
-// the Fresnel reflectance, exact and by Schlick's approximation. (Mirror reflection is chapter
-// 04's.) The Fresnel cases are checked against values known in closed form: ((n - 1) / (n + 1))^2
-// head-on, r_s^2 / 2 at Brewster's angle, 1 under total internal reflection.
+// The optics of chapter 05 (rt/materials/refraction.h): Snell refraction, total internal
+// reflection, and the Fresnel reflectance, exact and by Schlick's approximation. (Mirror reflection
+// is chapter 04's.) The Fresnel cases are checked against values known in closed form: ((n - 1) /
+// (n + 1))^2 head-on, r_s^2 / 2 at Brewster's angle, 1 under total internal reflection.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
 
 #include "rt/materials/optics.h"
+#include "rt/materials/refraction.h"
 
 using rt::real, rt::vec3;
 

@@ -25,6 +25,7 @@
 #include "rt/geometry/box.h"
 #include "rt/geometry/instance.h"
 #include "rt/geometry/quad.h"
+#include "rt/geometry/spawn_ray.h"
 #include "rt/geometry/sphere.h"
 #include "rt/integrators/path_tracer.h"
 #include "rt/materials/dielectric.h"
@@ -630,17 +631,17 @@ TEST_CASE(
         rt::hit_record again;
 
         vec3 out = scale * random_in_hemisphere(rng, rec.normal);
-        if (object.hit(rec.spawn_ray(primary, out), forward, again))
+        if (object.hit(rt::spawn_ray(rec, primary, out), forward, again))
             fail(out_fail, where() + ": outward ray re-hit at t " + std::to_string(again.t));
 
         vec3 in = scale * random_in_hemisphere(rng, -rec.normal);
-        if (!object.hit(rec.spawn_ray(primary, in), forward, again) ||
+        if (!object.hit(rt::spawn_ray(rec, primary, in), forward, again) ||
             again.t * in.length() < nearest / 2)
             fail(in_fail, where() + ": inward ray hit at t " + std::to_string(again.t) +
                               ", nearest other face " + std::to_string(nearest));
 
         vec3 along = scale * random_tangent(rng, rec.normal);
-        bool hit   = object.hit(rec.spawn_ray(primary, along), forward, again);
+        bool hit   = object.hit(rt::spawn_ray(rec, primary, along), forward, again);
         if (dot(along, rec.normal) > 0) {
             if (hit) fail(tangent_fail, where() + ": outside tangent ray re-hit");
         } else {
