@@ -3,6 +3,7 @@
 //   color = (1 - a) * white + a * blue,   a = (y + 1) / 2.
 #include <memory>
 
+#include "rt/integrators/sky_only.h"
 #include "rt/program/command_line.h"
 #include "rt/scene/background.h"
 

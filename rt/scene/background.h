@@ -7,7 +7,6 @@
 #include <cmath>
 
 #include "rt/core/vec3.h"
-#include "rt/integrators/estimator.h"
 
 namespace rt {
 
@@ -25,19 +24,6 @@ struct background {
         return color(std::lerp(bottom.x(), top.x(), a), std::lerp(bottom.y(), top.y(), a),
                      std::lerp(bottom.z(), top.z(), a));
     }
-};
-
-// Chapter 01's whole renderer: every ray sees the background, since there is nothing to hit.
-class sky_only : public radiance_estimator {
-  public:
-    explicit sky_only(const background& b) : sky(b) {}
-    color radiance(const ray& r, sampler&, int) const override {
-        return sky.radiance(r.direction());
-    }
-    std::string_view name() const override { return "sky"; }
-
-  private:
-    background sky;
 };
 
 }  // namespace rt

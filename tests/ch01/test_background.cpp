@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "rt/core/rng.h"
+#include "rt/integrators/sky_only.h"
 #include "rt/samplers/independent_sampler.h"
 #include "rt/scene/background.h"
 #include "test_helpers.h"

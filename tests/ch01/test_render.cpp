@@ -11,6 +11,7 @@
 
 #include "rt/camera/camera.h"
 #include "rt/integrators/estimator.h"
+#include "rt/integrators/sky_only.h"
 #include "rt/render/film.h"
 #include "rt/render/render.h"
 #include "rt/samplers/independent_sampler.h"
