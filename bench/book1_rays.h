@@ -1,6 +1,6 @@
 // Book 1's final scene as the benchmarks see it (chapters/ch06_defocus, `--scene final`): its
-// ~480 spheres, its camera, and the two batches of rays issue 11 measures on it: camera rays
-// and diffuse bounce rays from their hits.
+// ~480 spheres, its camera, and the two batches of rays the benchmarks measure on it: camera
+// rays and diffuse bounce rays from their hits.
 #pragma once
 
 #include <cstdint>
@@ -16,7 +16,7 @@ namespace rt_bench {
 // The spheres of book 1's final scene (random_spheres()), each with its box, for a BVH.
 std::vector<rt::bounded_object> book1_objects();
 
-// The scene's image: 400 x 225, as issue 11 renders it.
+// The scene's image: 400 x 225, as tools/benchmark renders it.
 rt::film book1_film();
 
 // Its camera (the settings of ch06_defocus's final_scene()), initialized for f.

@@ -1,4 +1,4 @@
-// The Embree anchor of issue 11: the same batches of rays traced through our BVH and through
+// The Embree anchor: the same batches of rays traced through our fastest BVH (chapter 17's) and through
 // Embree 3, one ray at a time on one thread, closest hit, and the rays per second of each.
 //   embree_anchor --out FILE.json [--rays N] [--repeat N] [--note TEXT]
 // Batches (generated once, from fixed seeds, and rounded to float so both see the same rays):
@@ -240,7 +240,7 @@ rt::scene bouncing_spheres_at_time_0() {
     return sc;
 }
 
-// Book 2's final scene (ch13) at time 0, at issue 11's depth.
+// Book 2's final scene (ch13) at time 0, at the depth tools/benchmark renders it with.
 rt::scene book2_final_at_time_0() {
     rt::scene sc = rt::with_fast_traversal(book2_final_scene(RT_ASSET_DIR "/globe.png"));
     std::dynamic_pointer_cast<rt::thin_lens_camera>(sc.cam)->shutter_close = 0;
@@ -248,8 +248,8 @@ rt::scene book2_final_at_time_0() {
     return sc;
 }
 
-// Book 2's Cornell box (ch11) at issue 11's settings.
-rt::scene cornell_box_at_issue_settings() {
+// Book 2's Cornell box (ch11) at the settings tools/benchmark renders it with.
+rt::scene cornell_box_at_benchmark_settings() {
     rt::scene sc          = rt::with_fast_traversal(cornell_box());
     sc.settings.width     = 200;
     sc.settings.max_depth = 50;
@@ -313,7 +313,7 @@ int main(int argc, char** argv) {
         batches.push_back(
             recorded_batch("ch13-recorded", book2_tracers, book2_final_at_time_0(), rays));
         batches.push_back(recorded_batch("ch11-recorded", cornell_tracers,
-                                         cornell_box_at_issue_settings(), rays));
+                                         cornell_box_at_benchmark_settings(), rays));
 
         std::vector<result> results;
         for (const batch& b : batches) results.push_back(measure(b, repeat));

@@ -1,4 +1,4 @@
-// Micro benchmarks of the renderer's hot functions (issue 11), with Google Benchmark: the
+// Micro benchmarks of the renderer's hot functions, with Google Benchmark: the
 // ray-sphere and ray-quad tests, the slab test, building and traversing the BVH over book 1's
 // final scene, and the random numbers. Each reports items per second: rays, objects or numbers.
 // Run by tools/bench-micro; single thread.

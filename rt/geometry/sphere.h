@@ -19,10 +19,10 @@ bool record_sphere_hit(const point3& center, real radius, const ray& r, interval
 // The quadratic of r and the sphere (center, radius): with f = A - C, a t^2 + 2 b t + c = 0,
 // a = d.d, b = f.d, c = f.f - r^2, and a2_discriminant = a^2 (b^2 - a c). Returns false when r
 // surely misses the sphere, else what crossing(a, b, c, a2_discriminant) returns (then
-// a2_discriminant is not negative). Inline, and only the common miss: a BVH leaf (chapter 07)
-// tests its spheres in a loop, and the compiler can then compute the ray's own terms (d.d) once
-// for all of them. (A callback rather than output parameters: the terms then stay in registers,
-// and the BVH's loop compiles as it did before chapter 12 shared this.)
+// a2_discriminant is not negative). Inline, and only the common miss: a wide BVH's leaf (chapter
+// 17) tests its spheres in a loop, and the compiler can then compute the ray's own terms (d.d)
+// once for all of them. A callback rather than output parameters, so that the terms stay in
+// registers; chapter 12's crossing() asks the same quadratic for both of its roots.
 template <class Crossing>
 inline bool solve_sphere_quadratic(const point3& center, real radius, const ray& r,
                                    Crossing&& crossing) {

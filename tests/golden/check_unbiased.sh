@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A new estimator must converge to the same image as the plain path tracer (issue 8): renders an
+# A new estimator must converge to the same image as the plain path tracer: renders an
 # earlier chapter's scene with chapter 16's program, the given integrator and sampler, and asks
 # noise_compare whether it agrees with that chapter's converged reference (a many-sample `path`
 # render, reference_images/NAME.converged.pfm) within the two renders' own noise.
