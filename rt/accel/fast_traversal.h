@@ -4,8 +4,8 @@
 // byte for byte; only the time changes.
 // Instances are placed again around their faster contents (the same offset, axis and angle, so
 // the same numbers); shapes, materials and media are shared, not copied, so the lights a scene's
-// integrator finds and every hit record's object and material are the same as before. A
-// medium's boundary is left as it is.
+// integrator finds and every hit record's object and material are those of the world it was
+// given. A medium's boundary is left as it is.
 #pragma once
 
 #include <memory>

@@ -1,9 +1,9 @@
-// Book 3's path tracer: at a surface that can be evaluated (material::evaluable), the next
+// Book 3's path tracer: at a surface whose lobe can be evaluated (material::lobe_kind), the next
 // direction comes half the time from the material's own density and half the time from the
 // lights (light_set), and the sample is weighted by the density of that mixture,
 //   p(wi) = 1/2 p_material(wi) + 1/2 p_lights(wi),   weight = f(wi) |cos| / p(wi),
 // which is valid because both parts are known for every direction: the estimate stays the
-// rendering equation's, only its noise changes. Glass and metal are sampled as before.
+// rendering equation's, only its noise changes. Glass and metal are sampled as in chapter 03.
 // Emission is added at every hit, as in chapter 10. Chapter 14.
 #pragma once
 
