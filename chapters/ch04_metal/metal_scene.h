@@ -10,7 +10,8 @@
 #include "rt/scene/hittable_list.h"
 #include "rt/scene/scene.h"
 
-// Book 1's metal scene: a matte sphere between a polished and a fully fuzzy metal sphere.
+// Book 1's metal scene: a matte sphere between a metal of fuzz 0.3 (a mirror whose reflections
+// are blurred) and one of fuzz 1.0 (so fuzzy it looks almost matte).
 inline rt::scene metal_spheres() {
     using rt::color, rt::point3;
     auto ground   = std::make_shared<rt::lambertian>(color(0.8, 0.8, 0.0));
