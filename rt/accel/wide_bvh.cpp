@@ -59,7 +59,7 @@ std::uint32_t wide_bvh::pack(const bvh& tree, std::uint32_t index) {
 
     // The lanes: up to four nodes of the binary subtree below this one, none inside another (a
     // cut). It starts at the two children; while there is room, the interior lane with the
-    // largest box, the one a ray is likeliest to enter (as in build()'s cost), gives way to its
+    // largest box, the one a ray is likeliest to enter (as in bvh's build), gives way to its
     // two children. Folding a fixed two levels instead would leave lanes empty where a child is
     // a leaf, and make deeper wide trees (the walls of a room: four box tests per ray, not
     // three). Each lane keeps its path from here, which orders the visits below.

@@ -16,8 +16,9 @@ namespace {
 // p. The next ray's test of this sphere adds about eps * radius (the cancellation in
 // |origin - center|^2 - radius^2). Twice those, so that an origin moved off by this bound is off
 // for sure (test_spawn_ray). Why |p| and not |center|: a big sphere's center lies far from the
-// point, and the ground of radius 1000 at (0, -1000, 0) would then move float rays 0.015 up,
-// inside the small spheres resting on it, which darkened their contact shadows.
+// point. A bound by |center| would move float rays off the ground of radius 1000 at
+// (0, -1000, 0) by 0.015, into the small spheres resting on it, and darken their contact
+// shadows.
 constexpr real sphere_error_scale = 8 * std::numeric_limits<real>::epsilon();
 
 // Both roots, t_near <= t_far, of solve_sphere_quadratic()'s equation for a ray that may cross.

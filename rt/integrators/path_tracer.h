@@ -1,5 +1,6 @@
-// The path tracer: chapter 03's way of turning a camera ray into radiance, used by every later
-// chapter. It evaluates the rendering equation one path at a time,
+// The path tracer: chapter 03's way of turning a camera ray into radiance, the one chapters
+// 03-13 render with (and chapters 14-17 on request). It evaluates the rendering equation one
+// path at a time,
 //   L(x, wo) = Le(x, wo) + weight * L(x', wi),
 // following at most max_depth ray segments; a path that runs out of depth brings back nothing.
 // Chapter 10 adds the emitted term Le (before it, nothing in a scene emits but the sky).
