@@ -10,8 +10,9 @@
 
 namespace rt {
 
-// The path of the center: C0 at time 0, C1 at time 1. A value of its own so that a BVH can keep
-// its moving spheres' paths side by side (bvh.h) and move them with this same formula.
+// The path of the center: C0 at time 0, C1 at time 1. A value of its own so that chapter 17's
+// BVH leaves can keep their moving spheres' paths side by side (leaf_shapes.h) and move them
+// with this same formula.
 struct center_path {
     point3 center0, center1;
     vec3 velocity;  // C1 - C0

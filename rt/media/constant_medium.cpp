@@ -50,7 +50,8 @@ bool constant_medium::hit(const ray& r, interval ray_t, hit_record& rec) const {
     rec.front_face = true;
     rec.p_error    = 0;
     rec.mat        = phase_function.get();
-    rec.object     = this;  // no surface: (u, v) = (0, 0)
+    rec.object     = this;    // no surface: (u, v) = (0, 0)
+    rec.local      = vec3();  // nor coordinates on one; a candidate's would otherwise remain
     return true;
 }
 
