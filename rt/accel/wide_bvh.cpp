@@ -22,7 +22,7 @@ wide_bvh::wide_bvh(const std::vector<bounded_object>& input) : wide_bvh(bvh(inpu
 std::uint32_t wide_bvh::pack_leaf(const bvh::node& b) {
     // Each object goes to the first kind that takes it, and runs of one kind are merged, so a
     // leaf of one kind (most leaves) is one run.
-    leaf l{std::uint32_t(runs.size()), b.offset, 0, b.count};
+    const auto first_run = std::uint32_t(runs.size());
     for (std::uint32_t i = b.offset; i < b.offset + b.count; ++i) {
         const hittable& object = *objects[i];
         std::uint8_t of_kind   = others_kind;
@@ -41,15 +41,14 @@ std::uint32_t wide_bvh::pack_leaf(const bvh::node& b) {
             others.push_back(&object);
             index = std::uint32_t(others.size() - 1);
         }
-        if (l.run_count > 0 && runs.back().kind == of_kind) {
+        if (runs.size() > first_run && runs.back().kind == of_kind) {
             ++runs.back().count;  // consecutive in its kind's array too: added in leaf order
         } else {
-            runs.push_back({*index, 1, of_kind});
-            ++l.run_count;
+            runs.push_back({*index, i, 1, of_kind, false});
         }
     }
-    leaves.push_back(l);
-    return leaf_bit | std::uint32_t(leaves.size() - 1);
+    runs.back().last = true;  // a bvh's leaf holds at least one object
+    return leaf_bit | first_run;
 }
 
 std::uint32_t wide_bvh::pack(const bvh& tree, std::uint32_t index) {
@@ -214,37 +213,33 @@ template <typename real4>
 
 }  // namespace
 
-// Inlined into the traversal (always_inline), where it runs once or twice per ray.
-[[gnu::always_inline]] inline bool wide_bvh::hit_leaf(const leaf& l, const ray& r, interval& ray_t,
-                                                      hit_record& rec) const {
+// Inlined into the traversal (always_inline), where it runs once or twice per ray. The kinds are
+// told apart by comparisons, not a switch: a jump table's indirect branch is harder to predict.
+[[gnu::always_inline]] inline bool wide_bvh::hit_leaf(std::uint32_t first_run, const ray& r,
+                                                      interval& ray_t, hit_record& rec) const {
     bool hit_anything = false;
     // Each test asks only for hits nearer than the nearest found so far (ray_t.max).
-    for (std::uint32_t k = l.first_run; k < l.first_run + l.run_count; ++k) {
+    for (std::uint32_t k = first_run;; ++k) {
         const run& here = runs[k];
-        switch (here.kind) {
-            case spheres_kind:
-                hit_anything |= spheres.hit(here.first, here.count, r, ray_t, rec);
-                break;
-            case moving_spheres_kind:
-                hit_anything |= moving_spheres.hit(here.first, here.count, r, ray_t, rec);
-                break;
-            case quads_kind:
-                hit_anything |= quads.hit(here.first, here.count, r, ray_t, rec);
-                break;
-            case others_kind:
-                for (std::uint32_t i = here.first; i < here.first + here.count; ++i) {
-                    if (others[i]->hit(r, ray_t, rec)) {
-                        ray_t.max    = rec.t;
-                        hit_anything = true;
-                    }
+        if (here.kind == spheres_kind) {
+            hit_anything |= spheres.hit(here.first, here.count, r, ray_t, rec);
+        } else if (here.kind == quads_kind) {
+            hit_anything |= quads.hit(here.first, here.count, r, ray_t, rec);
+        } else if (here.kind == moving_spheres_kind) {
+            hit_anything |= moving_spheres.hit(here.first, here.count, r, ray_t, rec);
+        } else if (here.kind == others_kind) {
+            for (std::uint32_t i = here.first; i < here.first + here.count; ++i) {
+                if (others[i]->hit(r, ray_t, rec)) {
+                    ray_t.max    = rec.t;
+                    hit_anything = true;
                 }
-                break;
-            default:
-                hit_anything |=
-                    extras[here.kind - extra_kind]->hit(here.first, here.count, r, ray_t, rec);
+            }
+        } else {
+            hit_anything |=
+                extras[here.kind - extra_kind]->hit(here.first, here.count, r, ray_t, rec);
         }
+        if (here.last) return hit_anything;
     }
-    return hit_anything;
 }
 
 #if defined(__x86_64__)
@@ -256,8 +251,7 @@ RT_ALSO_FOR_AVX2 bool wide_bvh::closest_hit(const ray& r, interval ray_t, hit_re
     // The root's own box is not tested: its children's boxes lie inside it, so a ray that misses
     // it misses them too (their slab distances are rounded the same way), and a root that is a
     // leaf is just its objects, which answer for themselves.
-    if (root & leaf_bit)
-        return !leaves.empty() && hit_leaf(leaves[root & ~leaf_bit], r, ray_t, rec);
+    if (root & leaf_bit) return !runs.empty() && hit_leaf(root & ~leaf_bit, r, ray_t, rec);
     const slab_ray<real4> sr(r);
 
     // Children still to visit, with where the ray enters them: when one comes up, a hit found
@@ -274,7 +268,7 @@ RT_ALSO_FOR_AVX2 bool wide_bvh::closest_hit(const ray& r, interval ray_t, hit_re
     bool hit_anything     = false;
     while (true) {
         if (current & leaf_bit) {
-            if (hit_leaf(leaves[current & ~leaf_bit], r, ray_t, rec)) hit_anything = true;
+            if (hit_leaf(current & ~leaf_bit, r, ray_t, rec)) hit_anything = true;
         } else {
             const node& n = nodes[current];
             real t_enter[4];
@@ -307,7 +301,7 @@ bool wide_bvh::hit(const ray& r, interval ray_t, hit_record& rec) const {
 }
 
 RT_ALSO_FOR_AVX2 real wide_bvh::shadow_fraction(const ray& r, interval ray_t) const {
-    if (leaves.empty()) return 1;
+    if (runs.empty()) return 1;
     // Every child the box test lets through, in the binary tree's first-child-first order (octant
     // 0), so that the fractions multiply in the same order whatever the ray's direction.
     const slab_ray<real4> sr(r);
@@ -317,10 +311,13 @@ RT_ALSO_FOR_AVX2 real wide_bvh::shadow_fraction(const ray& r, interval ray_t) co
     real fraction         = 1;
     while (true) {
         if (current & leaf_bit) {
-            const leaf& l = leaves[current & ~leaf_bit];
-            for (std::uint32_t i = l.first_object; i < l.first_object + l.object_count; ++i) {
-                fraction *= leaf_objects[i]->transmittance(r, ray_t);
-                if (fraction == 0) return 0;
+            for (std::uint32_t k = current & ~leaf_bit;; ++k) {
+                const run& here = runs[k];
+                for (std::uint32_t i = here.first_object; i < here.first_object + here.count; ++i) {
+                    fraction *= leaf_objects[i]->transmittance(r, ray_t);
+                    if (fraction == 0) return 0;
+                }
+                if (here.last) break;
             }
         } else {
             const node& n = nodes[current];

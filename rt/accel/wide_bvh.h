@@ -61,7 +61,8 @@ class wide_bvh : public bounded_hittable {
     // A wide node: the binary tree's node with up to four of its descendants pulled up, so that
     // one test covers up to four boxes. The binary tree's inner boxes are then never tested: they
     // contain their children's, so a ray that misses one misses its children too. Each lane is a
-    // child: a wide node's index, or leaf_bit | a leaf index; unused lanes hold an empty box.
+    // child: a wide node's index, or leaf_bit | the index of a leaf's first run; unused lanes
+    // hold an empty box.
     // Aligned to a real4 on purpose: GCC gives a 32-byte vector only 16-byte alignment where
     // the build does not enable AVX, and the AVX2 version's aligned loads would then fault.
     struct alignas(sizeof(real4)) node {
@@ -83,21 +84,19 @@ class wide_bvh : public bounded_hittable {
         others_kind,
         extra_kind
     };
-    // `count` consecutive objects of the leaf, of one kind: that kind's shapes from `first` on.
+    // `count` consecutive objects of a leaf, of one kind: that kind's shapes from `first` on,
+    // objects from `first_object` on. A leaf is its runs, one after the other in `runs` up to
+    // the one marked last, so a lane leads to them with no leaf record in between.
     struct run {
-        std::uint32_t first;
+        std::uint32_t first, first_object;
         std::uint16_t count;
         std::uint8_t kind;
-    };
-    // A leaf: its runs from `first_run` on, and its objects from `first_object` on in objects.
-    struct leaf {
-        std::uint32_t first_run, first_object;
-        std::uint16_t run_count, object_count;
+        bool last;
     };
 
     std::uint32_t pack(const bvh& tree, std::uint32_t index);
     std::uint32_t pack_leaf(const bvh::node& b);
-    bool hit_leaf(const leaf& l, const ray& r, interval& ray_t, hit_record& rec) const;
+    bool hit_leaf(std::uint32_t first_run, const ray& r, interval& ray_t, hit_record& rec) const;
     bool closest_hit(const ray& r, interval ray_t, hit_record& rec) const;
     // transmittance(), compiled twice as closest_hit() is (a virtual function cannot be).
     real shadow_fraction(const ray& r, interval ray_t) const;
@@ -106,7 +105,6 @@ class wide_bvh : public bounded_hittable {
     real wide_node_area = 0;         // the wide nodes' half areas, summed (the measure above)
     std::uint32_t root  = leaf_bit;  // where traversal starts: a node, or a leaf (none if empty)
     std::vector<node> nodes;
-    std::vector<leaf> leaves;
     std::vector<run> runs;
     // Every leaf's objects, leaf by leaf, in the binary tree's order (after the object map).
     std::vector<std::shared_ptr<hittable>> objects;

@@ -56,3 +56,8 @@ class sampler {
 using sampler_factory = std::unique_ptr<sampler> (*)(std::uint64_t seed);
 
 }  // namespace rt
+
+// Chapter 01's sampler, seen wherever the interface is: a call through sampler& can then be
+// inlined as independent_sampler's, checked by a comparison of its type, in every file that
+// draws (GCC's speculative devirtualization), and is an ordinary virtual call for any other.
+#include "rt/samplers/independent_sampler.h"
