@@ -1,5 +1,5 @@
-// The Embree anchor: the same batches of rays traced through our fastest BVH (chapter 17's) and through
-// Embree 3, one ray at a time on one thread, closest hit, and the rays per second of each.
+// The Embree anchor: the same batches of rays traced through our fastest BVH (chapter 17's) and
+// through Embree 3, one ray at a time on one thread, closest hit, and the rays per second of each.
 //   embree_anchor --out FILE.json [--rays N] [--repeat N] [--note TEXT]
 // Batches (generated once, from fixed seeds, and rounded to float so both see the same rays):
 //   book1-camera   book 1's final scene (ch06 --scene final): its camera, 400 x 225, one ray

@@ -1,7 +1,7 @@
 // Chapter 08's second scene (--scene checker): a solid-colored sphere and two checkered ones on
-// a floor at y = 0, to compare the two checker rules of rt/textures/texture.h. The middle sphere and
-// the left part of the floor use the floor rule (checker_texture); the right sphere and the right
-// part of the floor use the sign of a product of sines (sine_checker_texture), with the same
+// a floor at y = 0, to compare the two checker rules of rt/textures/texture.h. The middle sphere
+// and the left part of the floor use the floor rule (checker_texture); the right sphere and the
+// right part of the floor use the sign of a product of sines (sine_checker_texture), with the same
 // cells of side pi / 10 (the sines are then sin(10 x) sin(10 y) sin(10 z)).
 #pragma once
 

@@ -1,9 +1,9 @@
 // Chapter 14: importance sampling. A Monte Carlo estimate of an integral,
 //   integral of g  ~=  (1/N) sum g(x_i) / p(x_i),
 // is right for any density p that is nonzero wherever g is, and the less noisy the more p looks
-// like g. In chapters 03-13 a path's next direction follows the material alone (cos / pi for a diffuse
-// surface), so a small lamp was found only by luck. Book 3 aims half of the directions at the
-// lights: a quad light by a uniform point of its area, a sphere light by the cone of directions
+// like g. In chapters 03-13 a path's next direction follows the material alone (cos / pi for a
+// diffuse surface), so a small lamp was found only by luck. Book 3 aims half of the directions at
+// the lights: a quad light by a uniform point of its area, a sphere light by the cone of directions
 // it fills (both as densities per solid angle), and weights by the mixture
 //   p(wi) = 1/2 p_material(wi) + 1/2 p_lights(wi),   weight = f(wi) |cos| / p(wi).
 // --integrator path renders with chapter 03's path tracer instead; --scene chNN renders chapter

@@ -1,5 +1,5 @@
-// A sphere made of a material (rt/geometry/sphere.h, chapter 03's constructor): every hit reports the
-// material, and a missing one is refused. The geometry is chapter 02's and tested there.
+// A sphere made of a material (rt/geometry/sphere.h, chapter 03's constructor): every hit reports
+// the material, and a missing one is refused. The geometry is chapter 02's and tested there.
 #include <catch2/catch.hpp>
 #include <memory>
 

@@ -1,5 +1,5 @@
-// The optics of chapter 04 (rt/materials/optics.h): mirror reflection r = v - 2 (v.n) n. (Refraction
-// and the Fresnel reflectance are chapter 05's.)
+// The optics of chapter 04 (rt/materials/optics.h): mirror reflection r = v - 2 (v.n) n.
+// (Refraction and the Fresnel reflectance are chapter 05's.)
 #include <catch2/catch.hpp>
 #include <cmath>
 
