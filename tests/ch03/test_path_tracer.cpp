@@ -18,6 +18,7 @@
 #include "rt/camera/camera.h"
 #include "rt/core/error.h"
 #include "rt/geometry/quad.h"
+#include "rt/geometry/spawn_ray.h"
 #include "rt/geometry/sphere.h"
 #include "rt/integrators/path_tracer.h"
 #include "rt/materials/lambertian.h"
@@ -122,6 +123,20 @@ class absorber : public rt::material {
     }
 };
 
+// A material that lets every ray go straight on through its surface, weighted by a fixed color,
+// having drawn nothing: a colored filter. A path through several of them has a known product.
+class filter : public rt::material {
+  public:
+    explicit filter(const color& w) : weight(w) {}
+    std::optional<rt::scatter_sample> scatter(const rt::ray& r_in, const rt::hit_record& rec,
+                                              rt::sampler&) const override {
+        return rt::scatter_sample{rt::spawn_ray(rec, r_in, r_in.direction()), weight};
+    }
+
+  private:
+    color weight;
+};
+
 }  // namespace
 
 TEST_CASE("path_tracer: no shadow acne, every path off a Lambertian sphere returns its albedo",
@@ -194,6 +209,32 @@ TEST_CASE("path_tracer: an absorbed path returns what it gathered before, here n
     CHECK(
         exactly(tracer.radiance(rt::ray(point3(0, 0, 0), vec3(0, 0, -1)), s, 50), color(0, 0, 0)));
     CHECK(exactly(tracer.radiance(rt::ray(point3(0, 0, 0), vec3(0, 0, 1)), s, 50), color(1, 1, 1)));
+}
+
+TEST_CASE("path_tracer: the weights of a path's bounces multiply, first to last", "[ch03]") {
+    // Three filters across the view at z = -1, -2, -3, then a uniform sky of 1: every path
+    // crosses all three and returns w1 w2 w3, exactly (the weights are powers of 2). A tracer
+    // that replaced its throughput by each new weight instead of multiplying it in would
+    // return the last filter's weight alone; one that left the sky unweighted would return 1.
+    const color w1(real(0.5), real(0.25), 1), w2(real(0.5), 1, real(0.25)),
+        w3(1, real(0.5), real(0.5));
+    const color product(real(0.25), real(0.125), real(0.125));
+    auto world            = std::make_shared<rt::hittable_list>();
+    const color weights[] = {w1, w2, w3};
+    for (int k = 0; k < 3; ++k)
+        world->add(std::make_shared<rt::quad>(point3(-4, -4, real(-1 - k)), vec3(8, 0, 0),
+                                              vec3(0, 8, 0), std::make_shared<filter>(weights[k])));
+    const rt::path_tracer tracer(world, rt::background::uniform(color(1, 1, 1)));
+    for (const vec3& d : {vec3(0, 0, -1), vec3(real(0.25), real(-0.5), -1), vec3(-1, 1, -2)}) {
+        rt::independent_sampler s(5);
+        s.start_pixel_sample(0, 0, 0);
+        // 3 filters and the sky: 4 segments.
+        const color L = tracer.radiance(rt::ray(point3(0, 0, 0), d), s, 4);
+        INFO("through filters " << w1 << ", " << w2 << ", " << w3 << " along " << d
+                                << " the path must return their product " << product << ", got "
+                                << L);
+        CHECK(exactly(L, product));
+    }
 }
 
 TEST_CASE("path_tracer: a path draws only what its materials draw, 2 per Lambertian bounce",
