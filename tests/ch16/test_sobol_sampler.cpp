@@ -1,7 +1,7 @@
 // Tests for sobol_sampler.h (chapter 16): Owen-scrambled, per-pixel shuffled Sobol' points keep
 // the (0, 2)-sequence property (one point per elementary cell), are uniform, and depend only on
 // (pixel, sample index, draw, seed); the layout of sampler.h puts segment k's draws in the same
-// place whatever the segments before it drew.
+// place whatever the segments before it drew, and no two places of it give the same numbers.
 #include <catch2/catch.hpp>
 #include <cstdint>
 #include <set>
@@ -182,6 +182,56 @@ TEST_CASE("sobol: segment k's draws do not depend on what earlier segments drew"
     rt::sample2 pa = a.next_2d(), pb = b.next_2d();
     CHECK(pa.u == pb.u);
     CHECK(pa.v == pb.v);
+}
+
+TEST_CASE("sobol: no two draws of a path's layout give the same numbers", "[ch16]") {
+    // Each place of the layout (sampler.h: the camera's draws, then draws_per_segment for each
+    // segment) is keyed by its own index, so its numbers are independent of every other's. Two
+    // places that shared a key would return the same point in every sample: the number that
+    // picks a light would also aim the bounce after it, and no sample count removes that bias.
+    // So over many pixel samples no two places may agree but by chance; for independent
+    // numbers of 24 bits or more an equal pair is a one in 2^24 event, so agreeing in a tenth
+    // of the samples is no accident.
+    using rt::sampler;
+    constexpr int segments = 4;
+    constexpr int places   = sampler::camera_draws + segments * sampler::draws_per_segment;
+    auto place_name        = [](int place) {
+        if (place < sampler::camera_draws) return "camera draw " + std::to_string(place);
+        const int k = place - sampler::camera_draws;
+        return "segment " + std::to_string(k / sampler::draws_per_segment) + " draw " +
+               std::to_string(k % sampler::draws_per_segment);
+    };
+    rt::sobol_sampler s(21);
+    const int samples = 256;
+    std::vector<int> equal(places * places, 0);
+    for (int k = 0; k < samples; ++k) {
+        s.start_pixel_sample(k % 16, k / 16, k % 7);
+        std::vector<rt::sample2> drawn;
+        for (int d = 0; d < sampler::camera_draws; ++d) drawn.push_back(s.next_2d());
+        for (int segment = 0; segment < segments; ++segment) {
+            s.start_segment(segment);
+            for (int d = 0; d < sampler::draws_per_segment; ++d) drawn.push_back(s.next_2d());
+        }
+        REQUIRE(drawn.size() == std::size_t(places));
+        for (int a = 0; a < places; ++a)
+            for (int b = 0; b < a; ++b)
+                equal[std::size_t(a * places + b)] +=
+                    drawn[std::size_t(a)].u == drawn[std::size_t(b)].u &&
+                    drawn[std::size_t(a)].v == drawn[std::size_t(b)].v;
+    }
+    std::string shared;
+    int shared_pairs = 0;
+    for (int a = 0; a < places; ++a) {
+        for (int b = 0; b < a; ++b) {
+            const int count = equal[std::size_t(a * places + b)];
+            if (count * 10 <= samples) continue;
+            if (++shared_pairs <= 3)
+                shared += place_name(a) + " repeats " + place_name(b) + " in " +
+                          std::to_string(count) + " of " + std::to_string(samples) + " samples; ";
+        }
+    }
+    INFO(shared_pairs << " pairs of places share their numbers: " << shared);
+    CHECK(shared_pairs == 0);
 }
 
 TEST_CASE("sobol: the independent sampler ignores the layout, so earlier images stay the same",
