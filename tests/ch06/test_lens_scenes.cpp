@@ -57,3 +57,12 @@ TEST_CASE("lens scenes: in the final scene, a focus distance given alone keeps t
     const auto given = lens_of(book1_final_scene(real(0.25), std::nullopt));
     CHECK(given->aperture == real(0.25));
 }
+
+TEST_CASE("lens scenes: the glass scene is seen through the book's 20-degree field of view",
+          "[camera][ch06]") {
+    // The camera takes its vertical field of view in degrees and converts it once; a scene that
+    // converts it too hands the camera 0.35 "degrees", a close-up of a tiny patch.
+    const auto cam = lens_of(glass_scene_through_lens(std::nullopt, std::nullopt));
+    INFO("the glass scene's camera has vfov " << cam->vfov << " (degrees); the book's is 20");
+    CHECK(cam->vfov == Approx(20));
+}
