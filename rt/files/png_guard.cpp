@@ -87,6 +87,10 @@ std::string png_data_problem(std::FILE* file) {
             if (std::fread(ihdr.data(), 1, 13, file) != 13) return "";
             header = read_header(ihdr);
         } else if (std::memcmp(type, "IDAT", 4) == 0) {
+            // Legal, but stb_image (2.27) copies an empty first IDAT to its still-null buffer
+            // plus 0, which is undefined behaviour; no encoder writes one.
+            if (length == 0 && data.empty())
+                return "unsupported image (an empty PNG IDAT chunk before any image data)";
             const std::size_t at = data.size();
             data.resize(at + length);
             if (std::fread(data.data() + at, 1, length, file) != length) return "";

@@ -15,8 +15,9 @@
 namespace rt {
 
 // Empty when `file` is not a PNG, or is one whose chunks fit in the file and whose image data
-// inflates to at most 2 R + 1 MiB bytes; else the reason, to show after the file's name. Other
-// faults are left to stb_image. Reads the file from its start and leaves it rewound.
+// inflates to at most 2 R + 1 MiB bytes, and whose first IDAT chunk is not empty; else the
+// reason, to show after the file's name. Other faults are left to stb_image. Reads the file from
+// its start and leaves it rewound.
 std::string png_data_problem(std::FILE* file);
 
 }  // namespace rt

@@ -301,6 +301,19 @@ TEST_CASE("image_texture: a refusal quoting the file's own bytes stays one line 
     CHECK(message.find_first_of("\n\r\x1b") == std::string::npos);
 }
 
+TEST_CASE("image_texture: a PNG whose first IDAT chunk is empty is refused before stb reads it",
+          "[ch08]") {
+    // stb_image 2.27 copies an empty first IDAT to its null buffer plus 0 (undefined behaviour,
+    // fuzz/regressions/texture/png_empty_first_idat.png is the fuzzer's find): refused first.
+    temp_folder dir("image_texture", "empty_idat");
+    const std::string file = png_claiming(2, 2);
+    write_bytes(dir.file("empty_idat.png"),
+                file.substr(0, 33) + png_chunk("IDAT", "") + file.substr(33));
+    const std::string message = refusal(dir.file("empty_idat.png"));
+    CHECK_THAT(message, Catch::Contains(quoted(dir.file("empty_idat.png"))) &&
+                            Catch::Contains("an empty PNG IDAT chunk before any image data"));
+}
+
 TEST_CASE("image_texture: the CRC of the hand-made PNG chunks is the standard one", "[ch08]") {
     // The check value of CRC-32 (ISO 3309), and the IEND chunk every PNG ends with.
     CHECK(crc32("123456789") == 0xCBF43926u);
