@@ -2,7 +2,7 @@
 
 #include "ch06_defocus/random_spheres.h"
 #include "ch11_instances/cornell_box.h"
-#include "rt/core/rng.h"
+#include "ch13_final/final_layout.h"
 #include "rt/geometry/box.h"
 #include "rt/geometry/instance.h"
 #include "rt/materials/lambertian.h"
@@ -35,18 +35,24 @@ anchor_geometry book1_geometry() {
     return g;
 }
 
+anchor_geometry bouncing_geometry() {
+    anchor_geometry g;
+    for (const auto& s : random_sphere_layout(/*bouncing=*/true)) g.add(*s.sphere);
+    return g;
+}
+
 anchor_geometry book2_final_geometry() {
-    // The numbers of book2_final_scene(), in the order it draws its random numbers; that
+    // The numbers of book2_final_scene(), from the same draws (final_layout.h); that
     // function builds a scene whose BVH does not show its shapes, so they are repeated here
     // (the anchor checks them against the real scene: embree_anchor.cpp).
     using rt::point3, rt::vec3;
     anchor_geometry g;
-    rt::pcg32 rng(/*sequence=*/13, /*seed=*/2024);
-    auto ground = std::make_shared<rt::lambertian>(rt::color(0.48, 0.83, 0.53));
+    const book2_final_layout layout = book2_final_draws();
+    auto ground                     = std::make_shared<rt::lambertian>(rt::color(0.48, 0.83, 0.53));
     for (int i = 0; i < 20; ++i) {
         for (int j = 0; j < 20; ++j) {
             double x0 = -1000.0 + i * 100.0, z0 = -1000.0 + j * 100.0;
-            double y1 = 1 + 100 * rng.uniform();
+            double y1 = layout.box_heights[std::size_t(i * 20 + j)];
             for (const auto& face :
                  rt::box_faces(point3(x0, 0, z0), point3(x0 + 100, y1, z0 + 100), ground))
                 g.add(dynamic_cast<const rt::quad&>(*face.object));
@@ -64,10 +70,8 @@ anchor_geometry book2_final_geometry() {
     // The cluster: turned 15 degrees about y, then moved; its spheres' centers go along.
     const rt::rotate turn(std::make_shared<rt::sphere>(point3(0, 0, 0), 1), rt::axis::y, 15);
     const vec3 offset(-100, 270, 395);
-    for (int k = 0; k < 1000; ++k) {
-        double x = 165 * rng.uniform(), y = 165 * rng.uniform(), z = 165 * rng.uniform();
-        g.add(rt::sphere(turn.to_world(point3(x, y, z)) + offset, 10));
-    }
+    for (const point3& center : layout.cluster)
+        g.add(rt::sphere(turn.to_world(center) + offset, 10));
     g.left_out =
         "the blue medium in the glass ball and the mist (media: no surface); the cluster's "
         "instance is flattened into 1000 world-space spheres";

@@ -32,9 +32,12 @@ struct anchor_geometry {
     std::vector<rt::bounded_object> objects() const;
 };
 
-// Book 1's final scene: its spheres (random_spheres()). Also book 2's bouncing spheres at time
-// 0, where each moving sphere is at its start.
+// Book 1's final scene: its spheres (random_spheres()).
 anchor_geometry book1_geometry();
+
+// Book 2's bouncing spheres at time 0, where each moving sphere is at its start (book 2 lays
+// them out with draws of its own: random_sphere_layout(true)).
+anchor_geometry bouncing_geometry();
 
 // Book 2's final scene (chapters/ch13_final/final_scene.h) at time 0: the 2,400 faces of the
 // ground boxes, the light, the spheres (the moving one at its start), and the 1,000 spheres of

@@ -30,6 +30,7 @@
 
 #include "anchor_geometry.h"
 #include "book1_rays.h"
+#include "ch06_defocus/random_spheres.h"
 #include "ch11_instances/cornell_box.h"
 #include "ch13_final/final_scene.h"
 #include "embree_scene.h"
@@ -223,8 +224,8 @@ void print_table(const std::vector<batch>& batches, const std::vector<result>& r
     }
 }
 
-// Book 2's bouncing spheres (ch07) at time 0: book 1's spheres (the moving ones at their
-// start), its camera with the shutter closed.
+// Book 2's bouncing spheres (ch07) at time 0: its spheres (the moving ones at their start),
+// its camera with the shutter closed.
 rt::scene bouncing_spheres_at_time_0() {
     auto cam        = std::make_shared<rt::thin_lens_camera>();
     cam->vfov       = 20;
@@ -233,7 +234,9 @@ rt::scene bouncing_spheres_at_time_0() {
     cam->focus_dist = 10;
     cam->aperture   = 2 * cam->focus_dist * std::tan(rt::degrees_to_radians(0.01));
     rt::scene sc;
-    sc.world    = std::make_shared<rt::wide_bvh>(rt_bench::book1_objects());
+    std::vector<rt::bounded_object> spheres;
+    for (auto& s : random_sphere_layout(/*bouncing=*/true)) spheres.emplace_back(s.sphere);
+    sc.world    = std::make_shared<rt::wide_bvh>(spheres);
     sc.sky      = rt::background::uniform(rt::color(0.70, 0.80, 1.00));
     sc.cam      = cam;
     sc.settings = {.width = 400, .samples_per_pixel = 1, .max_depth = 50};
@@ -292,10 +295,12 @@ int main(int argc, char** argv) {
     }
 
     try {
-        const anchor_geometry book1   = rt_bench::book1_geometry();
-        const anchor_geometry book2   = rt_bench::book2_final_geometry();
-        const anchor_geometry cornell = rt_bench::cornell_box_geometry();
-        const both_tracers book1_tracers(book1), book2_tracers(book2), cornell_tracers(cornell);
+        const anchor_geometry book1    = rt_bench::book1_geometry();
+        const anchor_geometry bouncing = rt_bench::bouncing_geometry();
+        const anchor_geometry book2    = rt_bench::book2_final_geometry();
+        const anchor_geometry cornell  = rt_bench::cornell_box_geometry();
+        const both_tracers book1_tracers(book1), bouncing_tracers(bouncing), book2_tracers(book2),
+            cornell_tracers(cornell);
 
         std::vector<batch> batches;
         rt::film f         = rt_bench::book1_film();
@@ -309,7 +314,7 @@ int main(int argc, char** argv) {
         batches.push_back({"book1-camera", &book1_tracers, std::move(camera), {}});
         batches.push_back({"book1-bounce", &book1_tracers, std::move(bounce), {}});
         batches.push_back(
-            recorded_batch("ch07-recorded", book1_tracers, bouncing_spheres_at_time_0(), rays));
+            recorded_batch("ch07-recorded", bouncing_tracers, bouncing_spheres_at_time_0(), rays));
         batches.push_back(
             recorded_batch("ch13-recorded", book2_tracers, book2_final_at_time_0(), rays));
         batches.push_back(recorded_batch("ch11-recorded", cornell_tracers,

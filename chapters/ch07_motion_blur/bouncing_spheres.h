@@ -11,26 +11,27 @@
 #include "rt/accel/bounded.h"
 #include "rt/accel/bvh.h"
 #include "rt/camera/thin_lens_camera.h"
-#include "rt/core/rng.h"
 #include "rt/geometry/moving_sphere.h"
-#include "rt/materials/lambertian.h"
 #include "rt/scene/background.h"
 #include "rt/scene/hittable_list.h"
 #include "rt/scene/scene.h"
 
-// Book 2's bouncing spheres: book 1's final scene in which every small matte sphere moves up
-// by a random height while the shutter is open, under a light blue sky of constant color.
-inline rt::scene bouncing_spheres(bool use_bvh) {
-    rt::pcg32 bounce(/*sequence=*/7, /*seed=*/2024);
+// Book 2's bouncing spheres: book 1's grid of spheres, laid out by book 2's draws, in which
+// every small matte sphere moves up by its rise while the shutter is open, under a light blue
+// sky of constant color. `ground`, when given, replaces the ground sphere's gray (chapter 08's
+// checkered ground, as the book's texture section has it).
+inline rt::scene bouncing_spheres(bool use_bvh, std::shared_ptr<rt::material> ground = nullptr) {
     std::vector<rt::bounded_object> spheres;
-    for (auto& s : random_spheres()) {
-        bool small_and_matte =
-            s->radius() < 1 && std::dynamic_pointer_cast<rt::lambertian>(s->surface());
-        if (!small_and_matte) {
+    for (auto& [s, rise] : random_sphere_layout(/*bouncing=*/true)) {
+        if (ground && s->radius() == 1000) {
+            spheres.emplace_back(std::make_shared<rt::sphere>(s->center(), s->radius(), ground));
+            continue;
+        }
+        if (rise == 0) {
             spheres.emplace_back(s);
             continue;
         }
-        rt::point3 top = s->center() + rt::vec3(0, 0.5 * bounce.uniform(), 0);
+        rt::point3 top = s->center() + rt::vec3(0, rise, 0);
         spheres.emplace_back(
             std::make_shared<rt::moving_sphere>(s->center(), top, s->radius(), s->surface()));
     }

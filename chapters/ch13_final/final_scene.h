@@ -1,13 +1,13 @@
-// Book 2's final scene: every feature at once. The random box heights and sphere positions come
-// from a PCG32 with a fixed seed (the book uses rand()): the same scene every run.
+// Book 2's final scene: every feature at once. The random box heights, the marble's Perlin
+// tables and the cluster's sphere positions are the book's own (final_layout.h).
 #pragma once
 
 #include <memory>
 #include <string>
 
+#include "final_layout.h"
 #include "rt/accel/bvh.h"
 #include "rt/camera/thin_lens_camera.h"
-#include "rt/core/rng.h"
 #include "rt/geometry/box.h"
 #include "rt/geometry/instance.h"
 #include "rt/geometry/moving_sphere.h"
@@ -25,7 +25,7 @@
 
 inline rt::scene book2_final_scene(const std::string& globe_texture) {
     using rt::color, rt::point3, rt::vec3;
-    rt::pcg32 rng(/*sequence=*/13, /*seed=*/2024);
+    book2_final_layout layout = book2_final_draws();
     std::vector<rt::bounded_object> objects;
 
     // Ground: 20 x 20 boxes of random height; their faces go straight into the BVH.
@@ -33,7 +33,7 @@ inline rt::scene book2_final_scene(const std::string& globe_texture) {
     for (int i = 0; i < 20; ++i) {
         for (int j = 0; j < 20; ++j) {
             double x0 = -1000.0 + i * 100.0, z0 = -1000.0 + j * 100.0;
-            double y1  = 1 + 100 * rng.uniform();
+            double y1  = layout.box_heights[std::size_t(i * 20 + j)];
             auto faces = rt::box_faces(point3(x0, 0, z0), point3(x0 + 100, y1, z0 + 100), ground);
             objects.insert(objects.end(), faces.begin(), faces.end());
         }
@@ -70,15 +70,14 @@ inline rt::scene book2_final_scene(const std::string& globe_texture) {
                                          std::make_shared<rt::image_texture>(globe_texture))));
     objects.push_back(std::make_shared<rt::sphere>(
         point3(220, 280, 300), 80,
-        std::make_shared<rt::textured_lambertian>(std::make_shared<rt::noise_texture>(0.1))));
+        std::make_shared<rt::textured_lambertian>(
+            std::make_shared<rt::noise_texture>(0.1, layout.marble_draws))));
 
     // A cluster of 1000 small spheres in its own BVH, turned and moved as one instance.
     auto white = std::make_shared<rt::lambertian>(color(0.73, 0.73, 0.73));
     std::vector<rt::bounded_object> cluster;
-    for (int k = 0; k < 1000; ++k) {
-        double x = 165 * rng.uniform(), y = 165 * rng.uniform(), z = 165 * rng.uniform();
-        cluster.push_back(std::make_shared<rt::sphere>(point3(x, y, z), 10, white));
-    }
+    for (const point3& center : layout.cluster)
+        cluster.push_back(std::make_shared<rt::sphere>(center, 10, white));
     objects.push_back(std::make_shared<rt::translate>(
         std::make_shared<rt::rotate>(std::make_shared<rt::bvh>(cluster), rt::axis::y, 15),
         vec3(-100, 270, 395)));

@@ -1,7 +1,9 @@
 // Marble from Perlin noise: stripes along z whose phase is stirred by turbulence. Chapter 09.
-//   gray = 0.5 (1 + sin(scale * z + 10 * turbulence(p)))
-// This is the book's own formula (its noise_texture::value): the turbulence is taken at the
-// unscaled point p; `scale` only sets the stripe frequency.
+//   s = scale * p,  gray = 0.5 (1 + sin(s.z + 10 * turbulence(s)))
+// This is the book's own formula in the edition our scenes follow (v4.0.0-alpha.1's
+// noise_texture::value): `scale` sets both the stripe frequency and the size of the veins.
+// v3.2.3 and the v4.0 releases take the turbulence at the unscaled point p, which gives
+// coarser veins for a scale above 1 (book 2's two Perlin spheres use 4).
 #pragma once
 
 #include <cmath>
@@ -13,11 +15,16 @@ namespace rt {
 
 class noise_texture : public texture {
   public:
-    explicit noise_texture(real stripe_scale, std::uint64_t seed = 0)
+    // The Perlin tables of a fresh book_random(seed); seed 1 gives the book's own marble where
+    // the texture is the first thing its scene draws.
+    explicit noise_texture(real stripe_scale, std::uint32_t seed = 1)
         : noise(seed), scale(stripe_scale) {}
+    // The tables drawn from `draws`, where the book's scene builds its texture midway.
+    noise_texture(real stripe_scale, book_random& draws) : noise(draws), scale(stripe_scale) {}
 
     color value(real, real, const point3& p) const override {
-        real gray = real(0.5) * (1 + std::sin(scale * p.z() + 10 * noise.turbulence(p, 7)));
+        const point3 s = scale * p;
+        real gray      = real(0.5) * (1 + std::sin(s.z() + 10 * noise.turbulence(s, 7)));
         return color(gray, gray, gray);
     }
     bool uses_uv() const override { return false; }

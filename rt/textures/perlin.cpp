@@ -2,36 +2,31 @@
 
 #include <cmath>
 
-#include "rt/core/rng.h"
-#include "rt/samplers/sampling.h"
-
 namespace rt {
 
 namespace {
 
-// Fisher-Yates shuffle of 0..255.
-std::array<int, 256> permutation(pcg32& rng) {
+std::array<int, 256> permutation(book_random& draws) {
     std::array<int, 256> p{};
     for (int i = 0; i < 256; ++i) p[std::size_t(i)] = i;
-    for (int i = 255; i > 0; --i) {
-        auto j = int(rng.next_u32() % std::uint32_t(i + 1));
-        std::swap(p[std::size_t(i)], p[std::size_t(j)]);
-    }
+    for (int i = 255; i > 0; --i) std::swap(p[std::size_t(i)], p[std::size_t(draws.integer(0, i))]);
     return p;
 }
 
 }  // namespace
 
-perlin::perlin(std::uint64_t seed) {
-    pcg32 rng(/*sequence=*/0x9e71, seed);
-    for (auto& g : gradients) {
-        // Uniform unit vectors (the book normalizes points of a cube, which favours diagonals).
-        real u = rng.uniform();
-        g      = sample_uniform_sphere({u, rng.uniform()});
-    }
-    perm_x = permutation(rng);
-    perm_y = permutation(rng);
-    perm_z = permutation(rng);
+perlin::perlin(book_random& draws) {
+    // Normalized points of the cube [-1, 1)^3, as the book has them (they lean a little
+    // towards the cube's diagonals; the noise's bound and variance need only unit length).
+    for (auto& g : gradients) g = unit_vector(draws.vector(-1, 1));
+    perm_x = permutation(draws);
+    perm_y = permutation(draws);
+    perm_z = permutation(draws);
+}
+
+perlin::perlin(std::uint32_t seed) {
+    book_random draws(seed);
+    *this = perlin(draws);
 }
 
 real perlin::noise(const point3& p) const {

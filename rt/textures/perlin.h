@@ -10,15 +10,21 @@
 #include <array>
 #include <cstdint>
 
+#include "rt/core/book_random.h"
 #include "rt/core/vec3.h"
 
 namespace rt {
 
 class perlin {
   public:
-    // The tables come from a PCG32 seeded with `seed`: the same seed gives the same noise.
-    explicit perlin(std::uint64_t seed = 0);
-
+    // The book's tables, drawn from `draws` as the book's perlin() draws them: 256 gradients
+    // unit_vector(vec3::random(-1, 1)), then the permutations of x, y and z, each shuffled by
+    // Fisher-Yates from the top with random_int(0, i). The book builds them from the program's
+    // one rand() stream, wherever its scene happens to construct the texture.
+    explicit perlin(book_random& draws);
+    // The tables from a fresh stream, srand(seed): seed 1 is the book's when the texture is the
+    // first thing its scene draws (the two Perlin spheres, the simple light).
+    explicit perlin(std::uint32_t seed = 1);
     // Smooth noise in [-1, 1], 0 at integer points.
     real noise(const point3& p) const;
 

@@ -1,5 +1,5 @@
-// Tests for noise_texture.h (chapter 09): marble is gray = (1 + sin(scale z + 10 turbulence(p)))
-// / 2, a gray (r = g = b) in [0, 1] that takes its whole range, fixed by its seed.
+// Tests for noise_texture.h (chapter 09): marble is gray = (1 + sin(s.z + 10 turbulence(s))) / 2
+// with s = scale p, a gray (r = g = b) in [0, 1] that takes its whole range, fixed by its seed.
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -31,7 +31,8 @@ TEST_CASE("noise_texture: marble is gray, within 0..1, and follows its formula",
         const color c = marble.value(u, v, p);
         if (!(c.x() == c.y() && c.y() == c.z())) ++not_gray;
         if (!(c.x() >= 0 && c.x() <= 1)) ++outside;
-        const real gray = real(0.5) * (1 + std::sin(scale * p.z() + 10 * noise.turbulence(p, 7)));
+        const point3 s  = scale * p;
+        const real gray = real(0.5) * (1 + std::sin(s.z() + 10 * noise.turbulence(s, 7)));
         if (c.x() != gray) ++not_formula;
         darkest   = std::min(darkest, c.x());
         brightest = std::max(brightest, c.x());

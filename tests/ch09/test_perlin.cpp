@@ -19,10 +19,14 @@
 // and cross terms vanish, so Var = (1/3) E[sum w_c^2 |p - c|^2] = E[B] E[A]^2 with
 // A = (1 - s)^2 + s^2 and B = (1 - s)^2 t^2 + s^2 (1 - t)^2 averaged over t in [0, 1]:
 // E[A] = 26/35, E[B] = 19/315, Var = 12844/385875 = 0.03329.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
+#include "book_values.h"
 #include "rt/core/rng.h"
 #include "rt/textures/perlin.h"
 #include "test_helpers.h"
@@ -53,20 +57,31 @@ TEST_CASE("perlin: noise lies within sqrt(3)/2 everywhere, even at its local ext
     rt::pcg32 rng(90, 1);
     real largest = 0;
     int outside  = 0;
+    std::vector<std::pair<real, point3>> best;  // the highest sampled points, to climb from
     for (int i = 0; i < 150000; ++i) {
-        const real n = noise.noise(random_point(rng, i));
-        largest      = std::max(largest, std::fabs(n));
+        const point3 p = random_point(rng, i);
+        const real n   = noise.noise(p);
+        largest        = std::max(largest, std::fabs(n));
         if (!(std::fabs(n) <= noise_bound + rounding)) ++outside;
+        best.emplace_back(std::fabs(n), p);
+        if (best.size() > 200) {
+            std::nth_element(best.begin(), best.begin() + 50, best.end(),
+                             [](const auto& a, const auto& b) { return a.first > b.first; });
+            best.resize(50);
+        }
     }
     INFO("largest |noise| over random points: " << largest);
     CHECK(outside == 0);
     CHECK(largest > real(0.4));  // it does use a good part of its range
 
-    // Random points rarely sit at an extreme: climb |noise| from 300 starts (coordinate steps,
-    // halved when no step helps) and check the summits too.
+    // Random points rarely sit at an extreme: climb |noise| (coordinate steps, halved when no
+    // step helps) from 300 random starts and from the highest points sampled, and check the
+    // summits too.
+    std::vector<point3> starts;
+    for (int start = 0; start < 300; ++start) starts.push_back(random_point(rng, start));
+    for (const auto& [value, p] : best) starts.push_back(p);
     real highest = 0;
-    for (int start = 0; start < 300; ++start) {
-        point3 p   = random_point(rng, 0);
+    for (point3 p : starts) {
         real value = std::fabs(noise.noise(p)), step = real(0.25);
         while (step > real(1e-7)) {
             bool moved = false;
@@ -88,7 +103,7 @@ TEST_CASE("perlin: noise lies within sqrt(3)/2 everywhere, even at its local ext
     }
     INFO("highest local maximum of |noise| found: " << highest << " (bound " << noise_bound << ")");
     CHECK(highest <= noise_bound + rounding);
-    CHECK(highest > largest - rounding);  // the climb found at least what sampling did
+    CHECK(highest > largest);  // the climb rises above every sampled value
 }
 
 TEST_CASE("perlin: noise is 0 at every lattice point", "[ch09]") {
@@ -166,7 +181,7 @@ TEST_CASE("perlin: noise has mean 0 and the variance gradient noise must have", 
     // vectors have length sqrt(2): twice the variance) or linear weights instead of the
     // smoothstep (0.0296, 11% less) fall outside.
     const real expected_variance = real(12844.0 / 385875.0);
-    for (std::uint64_t seed : {0u, 1u, 2u}) {
+    for (std::uint32_t seed : {1u, 2u, 3u}) {
         const rt::perlin noise(seed);
         rt::pcg32 rng(94, seed);
         double sum = 0, sum_squares = 0;
@@ -202,4 +217,18 @@ TEST_CASE("perlin: turbulence is a sum of octaves, between 0 and 2", "[ch09]") {
     }
     CHECK(outside == 0);
     CHECK(wrong_single == 0);
+}
+
+TEST_CASE("perlin: the default tables are the book's, drawn first in its program", "[ch09]") {
+    // Printed by the book's own perlin (RayTracing/raytracing.github.io, v4.0.0-alpha.1
+    // sources, src/TheNextWeek/perlin.h, built with g++ 12 -O2 on x86-64), constructed before
+    // anything else draws, as in its two Perlin spheres and simple light scenes. Uniform
+    // gradients on the sphere, or x drawn before z, give other values.
+    const rt::perlin noise;
+    CHECK(noise.noise({0.5, 0.25, 0.75}) == book_value(-0.091847037353872271));
+    CHECK(noise.turbulence({0.5, 0.25, 0.75}) == book_value(0.22936348434608533));
+    CHECK(noise.noise({3.3, -1.7, 12.1}) == book_value(-0.18954890970837915));
+    CHECK(noise.turbulence({3.3, -1.7, 12.1}) == book_value(0.21512444769113404));
+    CHECK(noise.noise({-20.4, 7.9, 0.3}) == book_value(-0.15038126510256922));
+    CHECK(noise.turbulence({100.1, -50.6, 7.7}) == book_value(0.12429307560229221));
 }
