@@ -1,5 +1,6 @@
-// Chapter 03's report scene: three matte spheres and a small one on a finite floor under the
-// default sky, seen by the default camera. Later chapters' programs render it as --scene ch03.
+// Chapter 03's scenes under the default sky, seen by the default camera: the report scene, three
+// matte spheres and a small one on a finite floor (later chapters' --scene ch03), and the book's
+// own (--scene book; later chapters' --scene ch03-book).
 #pragma once
 
 #include <memory>
@@ -31,6 +32,22 @@ inline rt::scene matte_spheres_on_floor() {
     rt::scene scene;
     scene.world = world;
     // The default sky and camera: at the origin looking down -z, vfov 90, 16:9.
+    scene.settings = {.width = 400, .samples_per_pixel = 100, .max_depth = 50};
+    return scene;
+}
+
+// Book 1's diffuse chapter, its last image (image 12, "the gamma-corrected render of two diffuse
+// spheres"): chapter 02's sphere and ground sphere, both reflecting half the light, at the book's
+// 400 pixels, 100 samples and 50 bounces.
+inline rt::scene book_diffuse_spheres() {
+    using rt::color, rt::point3;
+    auto half  = std::make_shared<rt::lambertian>(color(0.5, 0.5, 0.5));
+    auto world = std::make_shared<rt::hittable_list>();
+    world->add(std::make_shared<rt::sphere>(point3(0, 0, -1), 0.5, half));
+    world->add(std::make_shared<rt::sphere>(point3(0, -100.5, -1), 100, half));
+
+    rt::scene scene;
+    scene.world    = world;
     scene.settings = {.width = 400, .samples_per_pixel = 100, .max_depth = 50};
     return scene;
 }

@@ -6,12 +6,14 @@
 #include <optional>
 #include <string>
 
+#include "ch05_dielectric/fresnel_option.h"
 #include "lens_scenes.h"
 #include "rt/integrators/path_tracer.h"
 #include "rt/program/command_line.h"
 
 int main(int argc, char** argv) {
     rt::command_line cli("ch06_defocus");
+    add_fresnel_option(cli);
     std::optional<rt::real> aperture, focus;
     std::string which = "glass";
     cli.app()

@@ -5,6 +5,9 @@
 // --scene checker shows solid textures instead: a solid color and two 3D checkerboards.
 #include <string>
 
+#include "book_checker_scenes.h"
+#include "ch05_dielectric/fresnel_option.h"
+#include "ch08_textures/texture_decoding_option.h"
 #include "checker_scene.h"
 #include "globe_scene.h"
 #include "rt/integrators/path_tracer.h"
@@ -12,6 +15,8 @@
 
 int main(int argc, char** argv) {
     rt::command_line cli("ch08_textures");
+    add_fresnel_option(cli);
+    add_texture_decoding_option(cli);
     // The project's own equirectangular map, made by tools/make-globe-texture.
     std::string texture_file = RT_ASSET_DIR "/globe.png";
     std::string which        = "globe";
@@ -19,10 +24,14 @@ int main(int argc, char** argv) {
         .add_option("--texture", texture_file, "Equirectangular image for the globe")
         ->capture_default_str();
     cli.app()
-        .add_option("--scene", which, "globe (book 2's earth), or checker (solid and checkered)")
-        ->check(CLI::IsMember({"globe", "checker"}))
+        .add_option("--scene", which,
+                    "globe (book 2's earth), checker (solid and checkered), bouncing (book 2's "
+                    "bouncing spheres on a checker), or two-spheres (book 2's checkered spheres)")
+        ->check(CLI::IsMember({"globe", "checker", "bouncing", "two-spheres"}))
         ->capture_default_str();
     return cli.run(argc, argv, [&] {
+        if (which == "bouncing") return rt::path_trace(bouncing_spheres_on_checker());
+        if (which == "two-spheres") return rt::path_trace(two_checkered_spheres());
         return rt::path_trace(which == "globe" ? globe(texture_file) : checkered_spheres());
     });
 }

@@ -4,12 +4,16 @@
 //   gray = 0.5 (1 + sin(scale z + 10 turbulence(p))).
 #include <string>
 
+#include "ch05_dielectric/fresnel_option.h"
+#include "ch08_textures/texture_decoding_option.h"
 #include "perlin_spheres.h"
 #include "rt/integrators/path_tracer.h"
 #include "rt/program/command_line.h"
 
 int main(int argc, char** argv) {
     rt::command_line cli("ch09_perlin");
+    add_fresnel_option(cli);
+    add_texture_decoding_option(cli);
     std::string which = "marble", texture_file = RT_ASSET_DIR "/globe.png";
     cli.app()
         .add_option("--scene", which, "marble (book 2), or globe: the image texture beside it")

@@ -2,12 +2,15 @@
 // nothing; the path tracer adds emission at every hit, L = Le + weight * L(scattered). With
 // a black background all light comes from the emitters. Quads Q + a u + b v make rectangles in
 // any orientation (book 2's first xy, yz and xz rectangles are special cases).
+#include "ch05_dielectric/fresnel_option.h"
+#include "ch08_textures/texture_decoding_option.h"
 #include "rt/integrators/path_tracer.h"
 #include "rt/program/command_line.h"
 #include "simple_light.h"
 
 int main(int argc, char** argv) {
-    return rt::command_line("ch10_lights").run(argc, argv, [] {
-        return rt::path_trace(simple_light());
-    });
+    rt::command_line cli("ch10_lights");
+    add_fresnel_option(cli);
+    add_texture_decoding_option(cli);
+    return cli.run(argc, argv, [] { return rt::path_trace(simple_light()); });
 }

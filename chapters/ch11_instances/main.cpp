@@ -5,6 +5,8 @@
 // --scene rotations turns three boxes in the same room, about x, y and z.
 #include <string>
 
+#include "ch05_dielectric/fresnel_option.h"
+#include "ch08_textures/texture_decoding_option.h"
 #include "cornell_box.h"
 #include "rotations_scene.h"
 #include "rt/integrators/path_tracer.h"
@@ -12,6 +14,8 @@
 
 int main(int argc, char** argv) {
     rt::command_line cli("ch11_instances");
+    add_fresnel_option(cli);
+    add_texture_decoding_option(cli);
     std::string which = "cornell";
     cli.app()
         .add_option("--scene", which, "cornell (book 2's box), or rotations (about x, y and z)")

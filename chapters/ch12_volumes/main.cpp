@@ -2,12 +2,15 @@
 // rho dL, so the distance to the next scattering is exponential, d = -ln(xi) / rho. If d falls
 // inside the medium's boundary the ray scatters there in a uniformly random direction (an
 // isotropic phase function, weight = the medium's albedo); otherwise it passes through.
+#include "ch05_dielectric/fresnel_option.h"
+#include "ch08_textures/texture_decoding_option.h"
 #include "cornell_smoke.h"
 #include "rt/integrators/path_tracer.h"
 #include "rt/program/command_line.h"
 
 int main(int argc, char** argv) {
-    return rt::command_line("ch12_volumes").run(argc, argv, [] {
-        return rt::path_trace(cornell_smoke());
-    });
+    rt::command_line cli("ch12_volumes");
+    add_fresnel_option(cli);
+    add_texture_decoding_option(cli);
+    return cli.run(argc, argv, [] { return rt::path_trace(cornell_smoke()); });
 }

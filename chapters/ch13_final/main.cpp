@@ -5,12 +5,16 @@
 // (final_scene(400, 250, 4)); its "real" run is --width 800 --spp 10000 --max-depth 40.
 #include <string>
 
+#include "ch05_dielectric/fresnel_option.h"
+#include "ch08_textures/texture_decoding_option.h"
 #include "final_scene.h"
 #include "rt/integrators/path_tracer.h"
 #include "rt/program/command_line.h"
 
 int main(int argc, char** argv) {
     rt::command_line cli("ch13_final");
+    add_fresnel_option(cli);
+    add_texture_decoding_option(cli);
     std::string texture_file = RT_ASSET_DIR "/globe.png";
     cli.app().add_option("--texture", texture_file, "Image for the globe")->capture_default_str();
     return cli.run(argc, argv, [&] { return rt::path_trace(book2_final_scene(texture_file)); });

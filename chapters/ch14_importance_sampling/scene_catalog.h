@@ -19,6 +19,7 @@
 #include "ch06_defocus/lens_scenes.h"
 #include "ch07_motion_blur/book1_in_bvh.h"
 #include "ch07_motion_blur/bouncing_spheres.h"
+#include "ch08_textures/book_checker_scenes.h"
 #include "ch08_textures/checker_scene.h"
 #include "ch08_textures/globe_scene.h"
 #include "ch09_perlin/perlin_spheres.h"
@@ -43,6 +44,7 @@ struct catalog_scene {
 inline std::span<const catalog_scene> catalog_scenes() {
     static constexpr auto scenes = std::to_array<catalog_scene>({
         {"ch03", [](const std::string&) { return matte_spheres_on_floor(); }},
+        {"ch03-book", [](const std::string&) { return book_diffuse_spheres(); }},
         {"ch04", [](const std::string&) { return metal_spheres(); }},
         {"ch05", [](const std::string&) { return glass_scene_from_origin(); }},
         {"ch06",
@@ -55,6 +57,8 @@ inline std::span<const catalog_scene> catalog_scenes() {
          [](const std::string&) { return book1_final_scene_in_bvh(/*use_bvh=*/true); }},
         {"ch08", [](const std::string& texture) { return globe(texture); }},
         {"ch08-checker", [](const std::string&) { return checkered_spheres(); }},
+        {"ch08-bouncing", [](const std::string&) { return bouncing_spheres_on_checker(); }},
+        {"ch08-two-spheres", [](const std::string&) { return two_checkered_spheres(); }},
         {"ch09",
          [](const std::string& texture) { return perlin_spheres(texture, /*with_globe=*/false); }},
         {"ch09-globe",

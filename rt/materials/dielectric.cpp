@@ -9,13 +9,32 @@
 
 namespace rt {
 
+namespace {
+fresnel_model scene_default = fresnel_model::schlick;
+}  // namespace
+
+fresnel_model default_fresnel_model() {
+    return scene_default;
+}
+
+void set_default_fresnel_model(fresnel_model model) {
+    scene_default = model;
+}
+
 dielectric::dielectric(real index, fresnel_model m) : ior(index), model(m) {
     require_positive(index, "dielectric index of refraction");
 }
 
 real dielectric::reflectance(real cos_theta, real eta) const {
-    return model == fresnel_model::exact ? fresnel_reflectance(cos_theta, eta)
-                                         : schlick_reflectance(cos_theta, eta);
+    switch (model) {
+        case fresnel_model::exact:
+            return fresnel_reflectance(cos_theta, eta);
+        case fresnel_model::book_schlick:
+            return schlick_reflectance_incident(cos_theta, eta);
+        case fresnel_model::schlick:
+            break;
+    }
+    return schlick_reflectance(cos_theta, eta);
 }
 
 std::optional<scatter_sample> dielectric::scatter(const ray& r_in, const hit_record& rec,

@@ -9,14 +9,22 @@
 
 namespace rt {
 
-// How the reflectance is computed (refraction.h): Schlick's approximation (the book's choice, with
-// the cosine taken on the less dense side) or the exact Fresnel equations.
-enum class fresnel_model { schlick, exact };
+// How the reflectance is computed (refraction.h): Schlick's approximation with the cosine taken
+// on the less dense side (ours), the exact Fresnel equations, or Schlick's with the incident
+// cosine on both sides (the book's form, to compare with a render of the book's code).
+enum class fresnel_model { schlick, exact, book_schlick };
+
+// The model of a dielectric built without one: schlick, unless a program's --fresnel chose
+// another before it built its scene (chapters/ch05_dielectric/fresnel_option.h). It is read only
+// while a scene is built, so a render never sees it change.
+fresnel_model default_fresnel_model();
+void set_default_fresnel_model(fresnel_model model);
 
 class dielectric : public material {
   public:
-    // ior: refractive index relative to the surrounding medium. Throws user_error unless > 0.
-    explicit dielectric(real ior, fresnel_model model = fresnel_model::schlick);
+    // index: refractive index relative to the surrounding medium. Throws user_error unless > 0.
+    explicit dielectric(real index) : dielectric(index, default_fresnel_model()) {}
+    dielectric(real index, fresnel_model model);
 
     // Draws 1 sampler dimension (the choice between reflection and refraction).
     std::optional<scatter_sample> scatter(const ray& r_in, const hit_record& rec,

@@ -21,6 +21,16 @@ namespace rt {
 
 namespace {
 
+// The book's reading: each byte over 255, taken as linear light.
+const std::array<real, 256>& bytes_over_255() {
+    static const std::array<real, 256> table = [] {
+        std::array<real, 256> t{};
+        for (int i = 0; i < 256; ++i) t[std::size_t(i)] = real(i / 255.0);
+        return t;
+    }();
+    return table;
+}
+
 // 8-bit sRGB code -> linear light: 256 values, computed once for every texture.
 const std::array<real, 256>& srgb8_to_linear() {
     static const std::array<real, 256> table = [] {
@@ -118,7 +128,20 @@ void image_texture::stb_free::operator()(unsigned char* pixels) const {
     stbi_image_free(pixels);
 }
 
-image_texture::image_texture(const std::string& path, std::int64_t texel_limit) {
+namespace {
+texel_decoding scene_default = texel_decoding::srgb;
+}  // namespace
+
+texel_decoding default_texel_decoding() {
+    return scene_default;
+}
+
+void set_default_texel_decoding(texel_decoding d) {
+    scene_default = d;
+}
+
+image_texture::image_texture(const std::string& path, std::int64_t texel_limit, texel_decoding d)
+    : decoding(d) {
     // One open file for the header and the pixels, so both are read from the same file.
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
                                                          std::fclose);
@@ -179,7 +202,7 @@ color image_texture::value(real u, real v, const point3&) const {
     int col                = std::min(int(u * real(w)), w - 1);
     int row                = std::min(int((1 - v) * real(h)), h - 1);
     const unsigned char* t = texels.get() + 3 * (std::size_t(row) * std::size_t(w) + col);
-    const auto& linear     = srgb8_to_linear();
+    const auto& linear = decoding == texel_decoding::srgb ? srgb8_to_linear() : bytes_over_255();
     return color(linear[t[0]], linear[t[1]], linear[t[2]]);
 }
 

@@ -22,6 +22,15 @@
 
 namespace rt {
 
+// How a texel's bytes become light: decoded as sRGB (ours), or divided by 255 as the book does
+// (to compare with a render of the book's code).
+enum class texel_decoding { srgb, bytes_over_255 };
+
+// The decoding of a texture loaded without one: srgb, unless a program's --texture-decoding
+// chose the book's before it built its scene (chapters/ch08_textures/texture_decoding_option.h).
+texel_decoding default_texel_decoding();
+void set_default_texel_decoding(texel_decoding decoding);
+
 class image_texture : public texture {
   public:
     // The most texels a texture may have: 2^26, 192 MiB of 8-bit RGB.
@@ -31,7 +40,8 @@ class image_texture : public texture {
     // naming the file, when it is missing, not a regular file, empty, of another format,
     // truncated or damaged, or larger than texel_limit texels (tests and the fuzz target pass a
     // smaller limit to reach the refusal with small files).
-    explicit image_texture(const std::string& path, std::int64_t texel_limit = max_texels);
+    explicit image_texture(const std::string& path, std::int64_t texel_limit = max_texels,
+                           texel_decoding decoding = default_texel_decoding());
 
     color value(real u, real v, const point3& p) const override;
     bool uses_uv() const override { return true; }
@@ -45,6 +55,7 @@ class image_texture : public texture {
     };
 
     int w = 0, h = 0;
+    texel_decoding decoding;
     // 8-bit sRGB RGB, row 0 at the top: the buffer stb_image decoded into, kept as it is.
     std::unique_ptr<unsigned char, stb_free> texels;
 };

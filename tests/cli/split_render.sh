@@ -4,8 +4,9 @@
 # machine").
 #   split_render.sh MODE EXE MERGE_PARTS ARGS...
 #   crops    four crops (the quadrants): merged .png and .pfm equal the single run's byte for byte
-#   samples  four sample ranges: merged mean and variance (.pfm) within 1e-6 relative
-#   mixed    two crops (the halves) of two sample ranges each: within 1e-6 relative
+#   samples  four sample ranges: merged mean and variance (.pfm) within 1e-6 relative, the
+#            variance also within what the parts' float means carry (compare_pfm.py)
+#   mixed    two crops (the halves) of two sample ranges each: the same bounds
 set -euo pipefail
 mode=$1 exe=$2
 export RT_MERGE_PARTS=$3
@@ -55,6 +56,6 @@ if [ "$mode" = crops ]; then
     echo "ok: four crops of $width x $height merged equal one run byte for byte (.png, .pfm)"
 else
     python3 "$here/compare_pfm.py" full.pfm merged.pfm 1e-6
-    python3 "$here/compare_pfm.py" full-variance.pfm merged-variance.pfm 1e-6
+    python3 "$here/compare_pfm.py" full-variance.pfm merged-variance.pfm 1e-6 full.pfm "$spp"
     echo "ok: four parts ($mode) of $spp spp merged equal one run within 1e-6 relative"
 fi
