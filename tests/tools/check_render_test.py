@@ -1,0 +1,224 @@
+#!/usr/bin/python3
+"""Tests of tools/check-render: the verdicts on renders of the right scene, on image-level
+mistakes made from a right render, and on bad input.
+
+  check_render_test.py match SCENE WIDTH SPP...   our own renders (another seed than the
+                                                  checker's) at each spp: judged a match,
+                                                  as a book-style PPM and as a PFM
+  check_render_test.py mistakes SCENE WIDTH SPP   gamma missing or twice, sRGB for gamma 2,
+                                                  flipped, mirrored, darker by 0.9, shifted a
+                                                  pixel, speckled: each judged a mismatch and
+                                                  named
+  check_render_test.py bad-input                  each trouble row: exit 2, one line, no map
+  check_render_test.py false-alarms SCENE WIDTH SPP N
+                                                  N renders with independent seeds: the share
+                                                  judged a mismatch (the statistic promises at
+                                                  most 1e-3 per image); fails above 3 in N
+
+A "student's" render here is our chapter program's, drawn with another seed than the
+checker's own renders, with the book's glass and texture forms (the checker's defaults), and
+written as the book writes it (P3, gamma 2)."""
+import os
+import subprocess
+import sys
+import tempfile
+import tomllib
+
+import numpy as np
+
+sys.dont_write_bytecode = True
+HERE = os.path.dirname(os.path.realpath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+from rtlib import display_codes, pfm  # noqa: E402
+
+CHECK = os.path.join(ROOT, "tools", "check-render")
+TEXTURE = os.path.join(ROOT, "assets", "globe.png")
+failures = []
+
+
+def fail(message):
+    print(f"FAIL: {message}")
+    failures.append(message)
+
+
+def scenes():
+    with open(os.path.join(ROOT, "tools", "check", "scenes.toml"), "rb") as f:
+        return tomllib.load(f)
+
+
+def render(scene, width, spp, seed, out):
+    """Our render of SCENE as a student's program would make it: linear pixels."""
+    entry = scenes()[scene]
+    exe = os.path.join(ROOT, "build", "release", "chapters", entry["program"])
+    command = [exe, *entry["args"], "--width", str(width), "--spp", str(spp), "--seed",
+               str(seed), "--max-depth", str(entry["max_depth"]), "--quiet", "--out", out]
+    if entry.get("glass"):
+        command += ["--fresnel", "book"]
+    if entry.get("texture"):
+        command += ["--texture", TEXTURE, "--texture-decoding", "book"]
+    subprocess.run(command, check=True)
+    image = pfm.read(out)
+    return np.asarray(pfm.as_array(image), dtype=np.float64).reshape(image.height,
+                                                                      image.width, 3)
+
+
+def write_ppm(path, codes):
+    """P3 text, as the book's program writes it."""
+    h, w, _ = codes.shape
+    with open(path, "w") as f:
+        f.write(f"P3\n{w} {h}\n255\n")
+        for row in codes.astype(int):
+            f.write("\n".join(f"{r} {g} {b}" for r, g, b in row) + "\n")
+
+
+def write_pfm(path, linear):
+    h, w, _ = linear.shape
+    with open(path, "wb") as f:
+        f.write(f"PF\n{w} {h}\n-1.0\n".encode())
+        f.write(np.ascontiguousarray(linear[::-1], dtype="<f4").tobytes())
+
+
+def checker(scene, image, *flags):
+    extra = ["--texture", TEXTURE] if scenes()[scene].get("texture") else []
+    run = subprocess.run([CHECK, scene, image, *extra, *flags], capture_output=True, text=True)
+    return run.returncode, run.stdout, run.stderr
+
+
+def match(scene, width, spps):
+    with tempfile.TemporaryDirectory() as d:
+        for spp in spps:
+            linear = render(scene, width, spp, 1, os.path.join(d, "ours.pfm"))
+            ppm, own_pfm = os.path.join(d, "student.ppm"), os.path.join(d, "student.pfm")
+            write_ppm(ppm, display_codes.encode(linear, "gamma2"))
+            write_pfm(own_pfm, linear)
+            for image in (ppm, own_pfm):
+                code, out, err = checker(scene, image, "--spp", str(spp))
+                verdict = next((line for line in out.splitlines() if "verdict" in line), err)
+                if code != 0:
+                    fail(f"{scene} {width} wide, {spp} spp, {os.path.basename(image)}: "
+                         f"exit {code}: {verdict}\n{out}")
+                else:
+                    print(f"ok: {scene} {width} wide, {spp} spp, "
+                          f"{os.path.basename(image)}: {verdict.strip()}")
+
+
+MISTAKES = [
+    # name, how the image is made from the linear render, words the likely cause must hold
+    ("gamma missing", lambda x, rng: display_codes.encode(x, "linear8"), "gamma missing"),
+    ("gamma twice", lambda x, rng: display_codes.encode(x, "gamma4"), "gamma applied twice"),
+    ("sRGB for gamma 2", lambda x, rng: display_codes.encode(x, "srgb"), "sRGB"),
+    ("upside down", lambda x, rng: display_codes.encode(x[::-1], "gamma2"), "upside down"),
+    ("mirrored", lambda x, rng: display_codes.encode(x[:, ::-1], "gamma2"), "mirrored"),
+    ("darker by 0.9", lambda x, rng: display_codes.encode(0.9 * x, "gamma2"),
+     "brightness scale"),
+    ("shifted a pixel right", lambda x, rng: display_codes.encode(
+        np.roll(x, 1, axis=1), "gamma2"), "shifted one pixel right"),
+    ("speckles", lambda x, rng: speckled(display_codes.encode(x, "gamma2"), rng), "speckles"),
+]
+
+
+def speckled(codes, rng):
+    """0.5 % of the pixels black or white, as a NaN (black) or an infinity (white) leaves them."""
+    codes = codes.copy()
+    h, w, _ = codes.shape
+    n = max(8, h * w // 200)
+    ys, xs = rng.integers(0, h, n), rng.integers(0, w, n)
+    codes[ys, xs] = np.where(rng.random(n) < 0.5, 0, 255)[:, np.newaxis]
+    return codes
+
+
+def mistakes(scene, width, spp):
+    rng = np.random.default_rng(5)
+    with tempfile.TemporaryDirectory() as d:
+        linear = render(scene, width, spp, 1, os.path.join(d, "ours.pfm"))
+        for name, make, words in MISTAKES:
+            image = os.path.join(d, "student.ppm")
+            write_ppm(image, make(linear, rng))
+            code, out, err = checker(scene, image, "--spp", str(spp))
+            cause = next((line for line in out.splitlines() if "likely cause" in line), "")
+            if code != 1 or words not in cause or "it matches" not in cause:
+                fail(f"{scene}, {name}: exit {code} (want 1), cause '{cause}' (want '{words}')"
+                     f"\n{out}{err}")
+            else:
+                print(f"ok: {scene}, {name}: {cause.strip()}")
+
+
+def bad_input():
+    with tempfile.TemporaryDirectory() as d:
+        good = os.path.join(d, "good.ppm")
+        linear = render("ch04", 64, 4, 1, os.path.join(d, "ours.pfm"))
+        write_ppm(good, display_codes.encode(linear, "gamma2"))
+        with open(good, "rb") as f:
+            data = f.read()
+        files = {"truncated.ppm": data[: len(data) // 2], "empty.png": b"",
+                 "text.ppm": b"hello, world\n", "png-cut.png": b"\x89PNG\r\n\x1a\n\0\0\0\rIHDR"}
+        for name, content in files.items():
+            with open(os.path.join(d, name), "wb") as f:
+                f.write(content)
+        tall = os.path.join(d, "tall.ppm")
+        write_ppm(tall, display_codes.encode(linear[:, :32], "gamma2"))
+        rows = [
+            ("a truncated PPM", ["ch04", os.path.join(d, "truncated.ppm"), "--spp", "4"],
+             "truncated.ppm"),
+            ("an empty file", ["ch04", os.path.join(d, "empty.png"), "--spp", "4"], "empty.png"),
+            ("not an image", ["ch04", os.path.join(d, "text.ppm"), "--spp", "4"], "text.ppm"),
+            ("a PNG cut in its header", ["ch04", os.path.join(d, "png-cut.png"), "--spp", "4"],
+             "png-cut.png"),
+            ("a missing file", ["ch04", os.path.join(d, "missing.ppm"), "--spp", "4"],
+             "missing.ppm"),
+            ("the wrong aspect ratio", ["ch04", tall, "--spp", "4"], "aspect ratio"),
+            ("--spp missing at another size", ["ch04", good], "--spp missing"),
+            ("an unknown scene", ["ch99", good, "--spp", "4"], "unknown scene 'ch99'"),
+            ("--spp 0", ["ch04", good, "--spp", "0"], "--spp must be at least 1"),
+            ("a texture scene without --texture", ["ch08", good, "--spp", "4"], "--texture"),
+            ("--encoding for a float image", ["ch04", os.path.join(d, "ours.pfm"), "--spp", "4",
+                                              "--encoding", "srgb"], "8-bit"),
+        ]
+        for what, args, words in rows:
+            before = set(os.listdir(d))
+            run = subprocess.run([CHECK, *args], capture_output=True, text=True)
+            lines = run.stderr.strip().splitlines()
+            written = set(os.listdir(d)) - before
+            if (run.returncode != 2 or len(lines) != 1 or words not in lines[0] or written
+                    or run.stdout):
+                fail(f"{what}: exit {run.returncode} (want 2), stderr {lines!r} (want one line "
+                     f"naming '{words}'), wrote {sorted(written)}")
+            else:
+                print(f"ok: {what}: {lines[0]}")
+
+
+def false_alarms(scene, width, spp, n):
+    alarms = 0
+    with tempfile.TemporaryDirectory() as d:
+        for seed in range(1, n + 1):
+            linear = render(scene, width, spp, 100 + seed, os.path.join(d, "ours.pfm"))
+            image = os.path.join(d, "student.ppm")
+            write_ppm(image, display_codes.encode(linear, "gamma2"))
+            code, out, err = checker(scene, image, "--spp", str(spp))
+            if code not in (0, 1):
+                fail(f"{scene} seed {100 + seed}: exit {code}: {err.strip()}")
+            alarms += code == 1
+    print(f"false alarms: {alarms} of {n} renders of {scene} ({width} wide, {spp} spp) judged "
+          f"a mismatch: {alarms / n:.4f} (the statistic promises at most 0.001 each)")
+    if alarms > 3:
+        fail(f"{alarms} false alarms in {n}: far more than 1e-3 per image")
+
+
+def main():
+    mode = sys.argv[1]
+    if mode == "match":
+        match(sys.argv[2], int(sys.argv[3]), [int(s) for s in sys.argv[4:]])
+    elif mode == "mistakes":
+        mistakes(sys.argv[2], int(sys.argv[3]), int(sys.argv[4]))
+    elif mode == "bad-input":
+        bad_input()
+    elif mode == "false-alarms":
+        false_alarms(sys.argv[2], int(sys.argv[3]), int(sys.argv[4]), int(sys.argv[5]))
+    else:
+        raise SystemExit(f"unknown mode {mode}")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,96 @@
+#!/usr/bin/python3
+"""The render checker against the zoo of classic mistakes: each mistake's image, as a student
+with that mistake would write it, must be judged a mismatch and named.
+
+  check_render_zoo.py ZOO_BUILD [--report FILE]
+
+ZOO_BUILD is a folder that tools/bug-zoo --check filled (zoo.json, and student/NAME.png: each
+mistake rendered by the mutated chapter program with seed 2, where the catalogue's image has
+seed 1). Each image goes to tools/check-render as our chapter programs make it (sRGB PNG,
+Schlick's cosine on the less dense side, textures decoded as sRGB, the catalogue's 64 spp). A
+mistake is named when the likely cause is that mistake, or the image-level cause it is (a
+missing gamma is an encoding the checker names itself). Prints one line a mistake and the
+detection rate; --report writes them as a Markdown table. Exit 1 unless every mistake is
+either judged a mismatch and named, or judged a match: some mistakes leave the catalogue's
+image as it is within noise (a wrong branch the scene never takes), and a checker that called
+those a mismatch would be wrong; they are counted and listed, not hidden."""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tomllib
+
+HERE = os.path.dirname(os.path.realpath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+CHECK = os.path.join(ROOT, "tools", "check-render")
+SPP = 64  # tools/bug-zoo's CATALOGUE_SPP
+
+# Mistakes that are an image-level cause the checker names in its own words.
+IMAGE_LEVEL = {
+    "gamma-missing": "gamma missing",
+    "gamma-applied-twice": "gamma applied twice",
+    "image-upside-down": "upside down",
+    "film-height-times-aspect": "not the scene's aspect ratio",
+}
+
+
+def scene_of(chapter, flag, scenes):
+    for name, entry in scenes.items():
+        if [chapter, flag or ""] in entry.get("zoo", []):
+            return name
+    return None
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("zoo_build")
+    parser.add_argument("--report")
+    args = parser.parse_args()
+    with open(os.path.join(args.zoo_build, "zoo.json")) as f:
+        results = json.load(f)
+    with open(os.path.join(ROOT, "tools", "check", "scenes.toml"), "rb") as f:
+        scenes = tomllib.load(f)
+    rows, missed, unseen = [], 0, 0
+    for r in results:
+        image = os.path.join(args.zoo_build, "student", r["image"])
+        scene = scene_of(r["chapter"], r.get("scene"), scenes)
+        if not r["image"].endswith(".png") or not os.path.exists(image) or scene is None:
+            rows.append((r["name"], scene or "-", "no image", "-"))
+            missed += 1
+            continue
+        command = [CHECK, scene, image, "--spp", str(SPP), "--encoding", "srgb", "--fresnel",
+                   "schlick", "--texture-decoding", "srgb", "--map",
+                   os.path.join(args.zoo_build, "student", r["name"] + ".check.png")]
+        if scenes[scene].get("texture"):
+            command += ["--texture", os.path.join(ROOT, "assets", "globe.png")]
+        run = subprocess.run(command, capture_output=True, text=True)
+        causes = [line.strip() for line in run.stdout.splitlines()
+                  if line.startswith("likely cause") or line.startswith("  or:")]
+        said = " ".join(causes) + run.stderr
+        named = (run.returncode in (1, 2) and f"'{r['name']}'" in said
+                 or IMAGE_LEVEL.get(r["name"], "\0") in said)
+        verdict = {0: "judged a match", 1: "mismatch", 2: "trouble"}.get(run.returncode, "crash")
+        # A mistake whose image is its correct image within noise cannot be seen in an image:
+        # the checker is right to call it a match. Counted apart, never hidden.
+        invisible = run.returncode == 0
+        status = "named" if named else ("not visible in the image" if invisible else "MISSED")
+        rows.append((r["name"], scene, verdict, status if named or invisible else
+                     (causes[0] if causes else run.stderr.strip())))
+        missed += not (named or invisible)
+        unseen += invisible
+        print(f"{'ok' if named or invisible else 'MISSED'}: {r['chapter']} {r['name']} "
+              f"({scene}): {verdict}; {(causes[0] if causes else run.stderr.strip())}")
+    named_count = len(rows) - missed - unseen
+    print(f"check-render: of {len(rows)} mistakes of the zoo, {named_count} judged a mismatch "
+          f"and named, {unseen} not visible in their image (judged a match), {missed} missed")
+    if args.report:
+        with open(args.report, "w") as f:
+            f.write("| mistake | scene | verdict | named |\n|---|---|---|---|\n")
+            for row in rows:
+                f.write("| " + " | ".join(str(c).replace("|", "\\|") for c in row) + " |\n")
+    return 1 if missed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
