@@ -16,9 +16,9 @@
 #include "rt/textures/texture.h"
 
 // A checker of the book's two colors, a green and an off-white, with cells of side `scale`.
-inline std::shared_ptr<rt::material> book_checker(rt::real scale) {
+inline std::shared_ptr<rt::material> book_checker(double scale) {
     return std::make_shared<rt::textured_lambertian>(std::make_shared<rt::checker_texture>(
-        scale, rt::color(0.2, 0.3, 0.1), rt::color(0.9, 0.9, 0.9)));
+        static_cast<rt::real>(scale), rt::color(0.2, 0.3, 0.1), rt::color(0.9, 0.9, 0.9)));
 }
 
 inline rt::scene bouncing_spheres_on_checker() {
