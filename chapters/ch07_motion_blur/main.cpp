@@ -9,12 +9,14 @@
 #include "book1_in_bvh.h"
 #include "bouncing_spheres.h"
 #include "ch05_dielectric/fresnel_option.h"
+#include "ch06_defocus/layout_seed_option.h"
 #include "rt/integrators/path_tracer.h"
 #include "rt/program/command_line.h"
 
 int main(int argc, char** argv) {
     rt::command_line cli("ch07_motion_blur");
     add_fresnel_option(cli);
+    add_layout_seed_option(cli);
     std::string accel = "bvh";
     std::string which = "bouncing";
     cli.app()

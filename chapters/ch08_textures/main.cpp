@@ -7,6 +7,7 @@
 
 #include "book_checker_scenes.h"
 #include "ch05_dielectric/fresnel_option.h"
+#include "ch06_defocus/layout_seed_option.h"
 #include "ch08_textures/texture_decoding_option.h"
 #include "checker_scene.h"
 #include "globe_scene.h"
@@ -16,6 +17,7 @@
 int main(int argc, char** argv) {
     rt::command_line cli("ch08_textures");
     add_fresnel_option(cli);
+    add_layout_seed_option(cli);
     add_texture_decoding_option(cli);
     // The project's own equirectangular map, made by tools/make-globe-texture.
     std::string texture_file = RT_ASSET_DIR "/globe.png";

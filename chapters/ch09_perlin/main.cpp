@@ -5,6 +5,7 @@
 #include <string>
 
 #include "ch05_dielectric/fresnel_option.h"
+#include "ch06_defocus/layout_seed_option.h"
 #include "ch08_textures/texture_decoding_option.h"
 #include "perlin_spheres.h"
 #include "rt/integrators/path_tracer.h"
@@ -13,6 +14,7 @@
 int main(int argc, char** argv) {
     rt::command_line cli("ch09_perlin");
     add_fresnel_option(cli);
+    add_layout_seed_option(cli);
     add_texture_decoding_option(cli);
     std::string which = "marble", texture_file = RT_ASSET_DIR "/globe.png";
     cli.app()

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "ch05_dielectric/fresnel_option.h"
+#include "ch06_defocus/layout_seed_option.h"
 #include "ch08_textures/texture_decoding_option.h"
 #include "cornell_box.h"
 #include "rotations_scene.h"
@@ -15,6 +16,7 @@
 int main(int argc, char** argv) {
     rt::command_line cli("ch11_instances");
     add_fresnel_option(cli);
+    add_layout_seed_option(cli);
     add_texture_decoding_option(cli);
     std::string which = "cornell";
     cli.app()

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "ch05_dielectric/fresnel_option.h"
+#include "ch06_defocus/layout_seed_option.h"
 #include "ch08_textures/texture_decoding_option.h"
 #include "final_scene.h"
 #include "rt/integrators/path_tracer.h"
@@ -14,6 +15,7 @@
 int main(int argc, char** argv) {
     rt::command_line cli("ch13_final");
     add_fresnel_option(cli);
+    add_layout_seed_option(cli);
     add_texture_decoding_option(cli);
     std::string texture_file = RT_ASSET_DIR "/globe.png";
     cli.app().add_option("--texture", texture_file, "Image for the globe")->capture_default_str();

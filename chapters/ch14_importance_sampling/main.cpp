@@ -13,6 +13,7 @@
 
 #include "book3_cornell_box.h"
 #include "ch05_dielectric/fresnel_option.h"
+#include "ch06_defocus/layout_seed_option.h"
 #include "ch08_textures/texture_decoding_option.h"
 #include "rt/integrators/mixture_tracer.h"
 #include "rt/integrators/path_tracer.h"
@@ -22,6 +23,7 @@
 int main(int argc, char** argv) {
     rt::command_line cli("ch14_importance_sampling");
     add_fresnel_option(cli);
+    add_layout_seed_option(cli);
     add_texture_decoding_option(cli);
     std::string which = "ch14", integrator = "light", texture_file = RT_ASSET_DIR "/globe.png";
     std::vector<std::string> names = scene_names();

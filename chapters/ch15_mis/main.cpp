@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "ch05_dielectric/fresnel_option.h"
+#include "ch06_defocus/layout_seed_option.h"
 #include "ch08_textures/texture_decoding_option.h"
 #include "ch14_importance_sampling/book3_cornell_box.h"
 #include "ch14_importance_sampling/scene_catalog.h"
@@ -23,6 +24,7 @@
 int main(int argc, char** argv) {
     rt::command_line cli("ch15_mis");
     add_fresnel_option(cli);
+    add_layout_seed_option(cli);
     add_texture_decoding_option(cli);
     std::string which = "ch14", integrator = "mis", texture_file = RT_ASSET_DIR "/globe.png";
     std::vector<std::string> names = scene_names();

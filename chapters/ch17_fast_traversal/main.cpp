@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "ch05_dielectric/fresnel_option.h"
+#include "ch06_defocus/layout_seed_option.h"
 #include "ch08_textures/texture_decoding_option.h"
 #include "ch14_importance_sampling/book3_cornell_box.h"
 #include "ch14_importance_sampling/scene_catalog.h"
@@ -24,6 +25,7 @@
 int main(int argc, char** argv) {
     rt::command_line cli("ch17_fast_traversal");
     add_fresnel_option(cli);
+    add_layout_seed_option(cli);
     add_texture_decoding_option(cli);
     std::string which = "ch13", integrator = "mis", samples = "sobol";
     std::string texture_file       = RT_ASSET_DIR "/globe.png";

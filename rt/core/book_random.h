@@ -24,12 +24,28 @@
 
 namespace rt {
 
+// The seed every layout starts from: 1, the book's own (a program that never calls srand), unless
+// a program's --layout-seed sets another. Another seed gives another layout the book's code could
+// have drawn, as it does where rand() is another generator; tools/check-render measures with
+// such layouts what a student's image shares with ours whatever its layout.
+inline std::uint32_t& layout_seed_setting() {
+    static std::uint32_t seed = 1;
+    return seed;
+}
+inline std::uint32_t book_layout_seed() {
+    return layout_seed_setting();
+}
+inline void set_book_layout_seed(std::uint32_t seed) {
+    layout_seed_setting() = seed;
+}
+
 class book_random {
   public:
     static constexpr std::int32_t max = 2147483647;  // glibc's RAND_MAX
 
-    // srand(seed); glibc takes seed 0 as 1, and 1 is the seed of a program that never calls srand.
-    explicit book_random(std::uint32_t seed = 1) {
+    // srand(seed); glibc takes seed 0 as 1. The default is the layout seed, the book's 1 unless
+    // set.
+    explicit book_random(std::uint32_t seed = book_layout_seed()) {
         // glibc keeps the seed in a 32-bit signed word and multiplies by Schrage's method,
         // which for a negative word (a seed of 2^31 or more) gives its own numbers.
         std::int64_t word = std::int32_t(seed == 0 ? 1 : seed);

@@ -15,9 +15,9 @@ namespace rt {
 
 class noise_texture : public texture {
   public:
-    // The Perlin tables of a fresh book_random(seed); seed 1 gives the book's own marble where
-    // the texture is the first thing its scene draws.
-    explicit noise_texture(real stripe_scale, std::uint32_t seed = 1)
+    // The Perlin tables of a fresh book_random(seed); the layout seed, 1 unless set, gives the
+    // book's own marble where the texture is the first thing its scene draws.
+    explicit noise_texture(real stripe_scale, std::uint32_t seed = book_layout_seed())
         : noise(seed), scale(stripe_scale) {}
     // The tables drawn from `draws`, where the book's scene builds its texture midway.
     noise_texture(real stripe_scale, book_random& draws) : noise(draws), scale(stripe_scale) {}

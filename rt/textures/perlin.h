@@ -22,9 +22,10 @@ class perlin {
     // Fisher-Yates from the top with random_int(0, i). The book builds them from the program's
     // one rand() stream, wherever its scene happens to construct the texture.
     explicit perlin(book_random& draws);
-    // The tables from a fresh stream, srand(seed): seed 1 is the book's when the texture is the
-    // first thing its scene draws (the two Perlin spheres, the simple light).
-    explicit perlin(std::uint32_t seed = 1);
+    // The tables from a fresh stream, srand(seed): the layout seed, 1 unless set, is the book's
+    // when the texture is the first thing its scene draws (the two Perlin spheres, the simple
+    // light).
+    explicit perlin(std::uint32_t seed = book_layout_seed());
     // Smooth noise in [-1, 1], 0 at integer points.
     real noise(const point3& p) const;
 

@@ -78,3 +78,21 @@ TEST_CASE("book_random: the book's random_double, random_int and vec3::random", 
     CHECK(low > 4500);
     CHECK(high > 4500);
 }
+
+TEST_CASE("book_random: the layout seed is the default stream's, 1 unless a program sets it",
+          "[ch06]") {
+    CHECK(rt::book_layout_seed() == 1);
+    rt::set_book_layout_seed(7);
+    rt::book_random layout, seven(7);
+    rt::set_book_layout_seed(1);
+    rt::book_random book, one(1);
+    for (int k = 0; k < 100; ++k) {
+        CHECK(layout.next() == seven.next());
+        CHECK(book.next() == one.next());
+    }
+    // Another seed is another layout.
+    rt::set_book_layout_seed(2);
+    rt::book_random two;
+    rt::set_book_layout_seed(1);
+    CHECK(two.next() != rt::book_random(1).next());
+}
