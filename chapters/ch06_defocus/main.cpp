@@ -7,6 +7,7 @@
 #include <string>
 
 #include "ch05_dielectric/fresnel_option.h"
+#include "ch06_defocus/layout_seed_option.h"
 #include "lens_scenes.h"
 #include "rt/integrators/path_tracer.h"
 #include "rt/program/command_line.h"
@@ -14,6 +15,7 @@
 int main(int argc, char** argv) {
     rt::command_line cli("ch06_defocus");
     add_fresnel_option(cli);
+    add_layout_seed_option(cli);
     std::optional<rt::real> aperture, focus;
     std::string which = "glass";
     cli.app()
@@ -23,9 +25,12 @@ int main(int argc, char** argv) {
         .add_option("--focus-dist", focus, "Distance to the sharp plane (default: lookat)")
         ->check(rt::number_above(0));
     cli.app()
-        .add_option("--scene", which, "glass, or final (book 1's random spheres)")
-        ->check(CLI::IsMember({"glass", "final"}));
+        .add_option("--scene", which,
+                    "glass, book (book 1's depth of field, its image 22), or final (book 1's "
+                    "random spheres)")
+        ->check(CLI::IsMember({"glass", "book", "final"}));
     return cli.run(argc, argv, [&] {
+        if (which == "book") return rt::path_trace(book_depth_of_field(aperture, focus));
         return rt::path_trace(which == "glass" ? glass_scene_through_lens(aperture, focus)
                                                : book1_final_scene(aperture, focus));
     });

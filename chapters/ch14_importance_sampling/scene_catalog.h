@@ -23,6 +23,7 @@
 #include "ch08_textures/checker_scene.h"
 #include "ch08_textures/globe_scene.h"
 #include "ch09_perlin/perlin_spheres.h"
+#include "ch10_lights/book_quads.h"
 #include "ch10_lights/simple_light.h"
 #include "ch11_instances/cornell_box.h"
 #include "ch11_instances/rotations_scene.h"
@@ -49,6 +50,8 @@ inline std::span<const catalog_scene> catalog_scenes() {
         {"ch05", [](const std::string&) { return glass_scene_from_origin(); }},
         {"ch06",
          [](const std::string&) { return glass_scene_through_lens(std::nullopt, std::nullopt); }},
+        {"ch06-book",
+         [](const std::string&) { return book_depth_of_field(std::nullopt, std::nullopt); }},
         {"ch06-final",
          [](const std::string&) { return book1_final_scene(std::nullopt, std::nullopt); }},
         {"ch07", [](const std::string&) { return bouncing_spheres(/*use_bvh=*/true); }},
@@ -64,6 +67,7 @@ inline std::span<const catalog_scene> catalog_scenes() {
         {"ch09-globe",
          [](const std::string& texture) { return perlin_spheres(texture, /*with_globe=*/true); }},
         {"ch10", [](const std::string&) { return simple_light(); }},
+        {"ch10-quads", [](const std::string&) { return book_quads(); }},
         {"ch11", [](const std::string&) { return cornell_box(); }},
         {"ch11-rotations", [](const std::string&) { return turned_boxes(); }},
         {"ch12", [](const std::string&) { return cornell_smoke(); }},
