@@ -9,6 +9,10 @@ mistakes made from a right render, and on bad input.
                                                   flipped, mirrored, darker by 0.9, shifted a
                                                   pixel, speckled: each judged a mismatch and
                                                   named
+  check_render_test.py layout SCENE WIDTH SPP     our render of another layout (as where rand()
+                                                  differs): --layout other judges it a match and
+                                                  its gamma mistake a mismatch, named; without
+                                                  --layout the cause named is the layout
   check_render_test.py bad-input                  each trouble row: exit 2, one line, no map
   check_render_test.py false-alarms SCENE WIDTH SPP N
                                                   N renders with independent seeds: the share
@@ -47,7 +51,7 @@ def scenes():
         return tomllib.load(f)
 
 
-def render(scene, width, spp, seed, out):
+def render(scene, width, spp, seed, out, layout_seed=None):
     """Our render of SCENE as a student's program would make it: linear pixels."""
     entry = scenes()[scene]
     exe = os.path.join(ROOT, "build", "release", "chapters", entry["program"])
@@ -57,10 +61,17 @@ def render(scene, width, spp, seed, out):
         command += ["--fresnel", "book"]
     if entry.get("texture"):
         command += ["--texture", TEXTURE, "--texture-decoding", "book"]
+    if layout_seed is not None:
+        command += ["--layout-seed", str(layout_seed)]
     subprocess.run(command, check=True)
     image = pfm.read(out)
     return np.asarray(pfm.as_array(image), dtype=np.float64).reshape(image.height,
                                                                       image.width, 3)
+
+
+def book_encoding(scene):
+    """How the book writes SCENE's image: linear before its gamma section, gamma 2 after."""
+    return {"linear": "linear8"}.get(scenes()[scene]["encoding"], scenes()[scene]["encoding"])
 
 
 def write_ppm(path, codes):
@@ -90,7 +101,7 @@ def match(scene, width, spps):
         for spp in spps:
             linear = render(scene, width, spp, 1, os.path.join(d, "ours.pfm"))
             ppm, own_pfm = os.path.join(d, "student.ppm"), os.path.join(d, "student.pfm")
-            write_ppm(ppm, display_codes.encode(linear, "gamma2"))
+            write_ppm(ppm, display_codes.encode(linear, book_encoding(scene)))
             write_pfm(own_pfm, linear)
             for image in (ppm, own_pfm):
                 code, out, err = checker(scene, image, "--spp", str(spp))
@@ -144,6 +155,29 @@ def mistakes(scene, width, spp):
                 print(f"ok: {scene}, {name}: {cause.strip()}")
 
 
+def layout(scene, width, spp):
+    """A layout none of the checker's own renders has (seed 1000; they take 1 and 2..17)."""
+    with tempfile.TemporaryDirectory() as d:
+        linear = render(scene, width, spp, 1, os.path.join(d, "ours.pfm"), layout_seed=1000)
+        right, gamma = os.path.join(d, "other.ppm"), os.path.join(d, "other-no-gamma.ppm")
+        write_ppm(right, display_codes.encode(linear, "gamma2"))
+        write_ppm(gamma, display_codes.encode(linear, "linear8"))
+        cases = [("another layout, --layout other", right, ["--layout", "other"], 0,
+                  "MATCHES"),
+                 ("another layout, judged as the book's", right, [], 1, "another layout"),
+                 ("another layout without gamma, --layout other", gamma, ["--layout", "other"],
+                  1, "linear")]
+        for what, image, flags, want, words in cases:
+            code, out, err = checker(scene, image, "--spp", str(spp), *flags)
+            said = [line for line in out.splitlines()
+                    if line.startswith(("verdict", "likely cause"))]
+            if code != want or not any(words in line for line in said):
+                fail(f"{scene}, {what}: exit {code} (want {want}), said {said} (want "
+                     f"'{words}')\n{out}{err}")
+            else:
+                print(f"ok: {scene}, {what}: {' / '.join(said)}")
+
+
 def bad_input():
     with tempfile.TemporaryDirectory() as d:
         good = os.path.join(d, "good.ppm")
@@ -156,6 +190,8 @@ def bad_input():
         for name, content in files.items():
             with open(os.path.join(d, name), "wb") as f:
                 f.write(content)
+        tiny = os.path.join(d, "tiny.ppm")
+        write_ppm(tiny, display_codes.encode(linear[:4, :7], "gamma2"))
         tall = os.path.join(d, "tall.ppm")
         write_ppm(tall, display_codes.encode(linear[:, :32], "gamma2"))
         rows = [
@@ -168,10 +204,13 @@ def bad_input():
             ("a missing file", ["ch04", os.path.join(d, "missing.ppm"), "--spp", "4"],
              "missing.ppm"),
             ("the wrong aspect ratio", ["ch04", tall, "--spp", "4"], "aspect ratio"),
+            ("an image too small to judge", ["ch04", tiny, "--spp", "4"], "too small"),
             ("--spp missing at another size", ["ch04", good], "--spp missing"),
             ("an unknown scene", ["ch99", good, "--spp", "4"], "unknown scene 'ch99'"),
             ("--spp 0", ["ch04", good, "--spp", "0"], "--spp must be at least 1"),
             ("a texture scene without --texture", ["ch08", good, "--spp", "4"], "--texture"),
+            ("--layout other for a scene without one", ["ch04", good, "--spp", "4", "--layout",
+                                                         "other"], "no random layout"),
             ("--encoding for a float image", ["ch04", os.path.join(d, "ours.pfm"), "--spp", "4",
                                               "--encoding", "srgb"], "8-bit"),
         ]
@@ -211,6 +250,8 @@ def main():
         match(sys.argv[2], int(sys.argv[3]), [int(s) for s in sys.argv[4:]])
     elif mode == "mistakes":
         mistakes(sys.argv[2], int(sys.argv[3]), int(sys.argv[4]))
+    elif mode == "layout":
+        layout(sys.argv[2], int(sys.argv[3]), int(sys.argv[4]))
     elif mode == "bad-input":
         bad_input()
     elif mode == "false-alarms":

@@ -19,6 +19,9 @@ curve gives a noisy value (E[f(X)] - f(E[X]) = f''/2 Var X). With A the mean of 
 renders and C the encoding of their mean (itself a mean of K cap samples, biased by 1/K of A's
 bias b), b = (A - C) K / (K - 1), f(mu) = C - b / K and the expectation at n samples is
 f(mu) + b cap / n; the code's rounding adds a variance of 1/12 per pixel that does not scale.
+
+Float images (PFM, EXR) at the rendered spp are compared capped at 1, as 8-bit ones are by
+their code 255: a heavy tail of rare bright samples is what K renders measure worst.
 """
 import math
 import statistics
@@ -26,6 +29,7 @@ import statistics
 import numpy as np
 
 FAMILY_ALARM = 1e-3
+CAP = 1.0  # float pixels are compared at most this bright (at the rendered spp)
 
 
 def block_size(width, height):
@@ -57,8 +61,18 @@ class Expectation:
     def __init__(self, renders, rendered, spp, encoding, b, encode, encode_continuous):
         k = renders.shape[0]
         self.b = b
+        self.cap = None
         if spp <= rendered:
             codes = encode(renders, encoding)
+            if encoding == "float":
+                # Float pixels have no ceiling, and an estimator with rare bright samples (a
+                # light reached through a mixture pdf, caustics) has a heavy tail that K renders
+                # measure badly and whose block means are far from normal. Capped at 1, as the
+                # book's 8-bit file is by its code 255, ours and the student's are bounded; the
+                # expectation is still measured, of the capped value (a NaN or an infinity is
+                # left as it is, and fails).
+                self.cap = CAP
+                codes = np.minimum(codes, self.cap)
             self.mean_pixels = codes.mean(axis=0)
             pixel_var = codes.var(axis=0, ddof=1)
             self.E = blocks(self.mean_pixels, b)
@@ -77,11 +91,16 @@ class Expectation:
             self.V = blocks(pixel_var, b) / (b * b)
         # A floor under V: a block that our renders never vary (a plain background) may still
         # differ by a last-bit rounding, one code in a few of its pixels, or 1e-6 of a float.
-        floor = (0.5 ** 2) / (b * b) if encoding != "float" else (1e-6 * np.abs(self.E)) ** 2
+        # (1e-12 more for floats: a block black in every render of ours is judged, not 0 / 0.)
+        floor = ((0.5 ** 2) / (b * b) if encoding != "float"
+                 else (1e-6 * np.abs(self.E)) ** 2 + 1e-24)
         self.V = np.maximum(self.V, floor)
         self.k = k
 
     def z(self, student_pixels):
+        if self.cap is not None:
+            student_pixels = np.where(np.isfinite(student_pixels),
+                                      np.minimum(student_pixels, self.cap), student_pixels)
         s = blocks(student_pixels, self.b)
         return (s - self.E) / np.sqrt(self.V * (1 + 1 / self.k))
 

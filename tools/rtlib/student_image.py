@@ -11,6 +11,8 @@ from typing import NamedTuple
 import numpy as np
 
 FLOAT_FORMATS = (".pfm", ".exr")
+MAX_SIDE = 16384         # pixels a side, at most: the book's largest image is 1200 wide
+MAX_PIXELS = 1 << 26     # and 64 Mi pixels in all, refused before the pixels are read
 
 
 class BadImage(ValueError):
@@ -87,6 +89,10 @@ def _read(path):
         if not (eight_bit or floats):
             raise BadImage(f"'{path}' holds {spec.format} values; the checker reads 8-bit "
                            "images (PPM with maximum 255, PNG) and float ones (PFM, EXR)")
+        if not (0 < spec.width <= MAX_SIDE and 0 < spec.height <= MAX_SIDE
+                and spec.width * spec.height <= MAX_PIXELS):
+            raise BadImage(f"'{path}' says it is {spec.width} x {spec.height}: beyond the "
+                           f"checker's limit of {MAX_SIDE} a side and {MAX_PIXELS} pixels")
         if spec.nchannels not in (3, 4):
             raise BadImage(f"'{path}' has {spec.nchannels} channels; an RGB image has 3")
         pixels = image.read_image(0, 0, 0, 3, oiio.UINT8 if eight_bit else oiio.FLOAT)
