@@ -13,6 +13,16 @@ standard normal for a render of the same scene by the same estimator (the 1/K: E
 error). A block fails beyond the Bonferroni bound that keeps the chance of any false alarm in a
 whole image at 1e-3.
 
+Rare samples break that normality: a pixel lit by a path that finds a small bright object once
+in hundreds of samples is mostly one value and rarely a far one, and one such pixel in a block
+of a correct render is "five standard deviations". So S leaves out the student's FORGIVEN (2)
+pixels of each block that are farthest from our mean, when our renders gave their values too
+around the block (its own and its eight neighbours' pixels, any render): a region that differs
+moves many pixels and keeps its z, a lone value no render of ours came near (a NaN's black speck
+in a bright region) is kept. Where noise is skewed, the pixels left out are mostly on one side:
+the expectation is lowered by what the same rule does to each of our renders (against the mean
+of the others). Measured: tests/tools/check_render_test.py false-alarms (tools/check/README.md).
+
 Above `cap` samples per pixel the renders are made at cap and scaled: the variance of a pixel's
 mean of independent samples falls as 1/spp, and so does, to first order, the bias the encoding's
 curve gives a noisy value (E[f(X)] - f(E[X]) = f''/2 Var X). With A the mean of the encoded
@@ -96,13 +106,96 @@ class Expectation:
                  else (1e-6 * np.abs(self.E)) ** 2 + 1e-24)
         self.V = np.maximum(self.V, floor)
         self.k = k
+        # The values our renders gave around each block (its own and its eight neighbours'),
+        # per channel: a student's pixel within them may be a rare sample, one outside may not.
+        lowest, highest = blocks_extreme(codes, b, np.min), blocks_extreme(codes, b, np.max)
+        self.seen_low, self.seen_high = around(lowest, np.min), around(highest, np.max)
+        # What leaving pixels out does to a correct render's block mean, on average: each render
+        # of ours against the mean of the others (its deviation scaled by K / (K - 1)). Where a
+        # pixel's noise is skewed (bright rare samples), its farthest pixels are mostly above
+        # the mean and leaving them out lowers the block; the student's block is judged against
+        # that same lowering. At more samples than rendered, the pixels' spread and so the
+        # lowering shrink as 1 / sqrt(spp).
+        spread_scale = 1.0 if spp <= rendered else math.sqrt(rendered / spp)
+        centre = codes.mean(axis=0)
+        # The block mean's skewness (its pixels' third central moments add up, as their
+        # variances do), k-statistic per pixel; at more samples than rendered it falls as
+        # 1 / sqrt(spp), as a mean's skewness does.
+        third = (((codes - centre) ** 3).sum(axis=0) * k / ((k - 1) * (k - 2)) if k > 2
+                 else np.zeros_like(centre))
+        self.skew = (blocks(third, b) / (b * b) ** 2 / self.V ** 1.5) * spread_scale
+        self.forgiveness = np.mean([
+            blocks(forgive_rare((codes[i] - centre) * k / (k - 1), codes[i],
+                                self.seen_low, self.seen_high, b), b)
+            for i in range(k)], axis=0) * spread_scale
 
     def z(self, student_pixels):
         if self.cap is not None:
             student_pixels = np.where(np.isfinite(student_pixels),
                                       np.minimum(student_pixels, self.cap), student_pixels)
-        s = blocks(student_pixels, self.b)
-        return (s - self.E) / np.sqrt(self.V * (1 + 1 / self.k))
+        deviation = forgive_rare(student_pixels - self.mean_pixels, student_pixels,
+                                 self.seen_low, self.seen_high, self.b)
+        z = (blocks(deviation, self.b) - self.forgiveness) / np.sqrt(self.V * (1 + 1 / self.k))
+        return skew_adjusted(z, self.skew)
+
+
+def skew_adjusted(z, skew):
+    """z rescaled so that the bound of a normal test applies to a skewed block mean. The
+    Cornish-Fisher expansion puts the tail quantile of a variable of skewness g at
+    q + g (q^2 - 1) / 6, q the normal one: the bound of the side the skew lengthens moves out by
+    that, the other side's is kept (never tightened, since g is estimated). z on that side is
+    scaled by q / (q + |g| (q^2 - 1) / 6), so that judge()'s bound q stands for the moved one."""
+    q = bound(z.size)
+    widened = q / (q + np.abs(skew) * (q * q - 1) / 6)
+    lengthened = np.sign(z) == np.sign(skew)
+    return np.where(lengthened, z * widened, z)
+
+
+FORGIVEN = 2  # pixels of each block that may be rare samples, at most
+
+
+def blocks_extreme(x, b, reduce):
+    """reduce (np.min or np.max) over the renders and the pixels of each block: (H//b, W//b, 3)."""
+    h, w = x.shape[-3] // b * b, x.shape[-2] // b * b
+    x = x[..., :h, :w, :].reshape(x.shape[:-3] + (h // b, b, w // b, b, 3))
+    return reduce(x, axis=tuple(range(x.ndim - 5)) + (-4, -2))
+
+
+def around(x, reduce):
+    """reduce over each block and its eight neighbours (those inside the image)."""
+    padded = np.pad(x, ((1, 1), (1, 1), (0, 0)), mode="edge")
+    h, w = x.shape[:2]
+    return reduce(np.stack([padded[dy:dy + h, dx:dx + w] for dy in range(3) for dx in range(3)]),
+                  axis=0)
+
+
+def forgive_rare(deviation, pixels, low, high, b):
+    """The student's deviations from our mean, less those of the FORGIVEN farthest pixels of each
+    block whose values our renders also gave around that block.
+
+    Why: a pixel whose light comes from rare samples (a path that finds a small bright object
+    once in hundreds) is mostly one value and rarely a far one. A block that holds one such
+    pixel is "five standard deviations" off for a normal test, and yet that happens to a correct
+    render in one block in ten. A region that differs moves many pixels, and two forgiven ones
+    hardly change its mean; a pixel no render of ours came near (a NaN's black speck in a bright
+    region) is never forgiven."""
+    h, w = deviation.shape[0] // b * b, deviation.shape[1] // b * b
+    d = np.nan_to_num(deviation[:h, :w], nan=np.inf).reshape(h // b, b, w // b, b, 3)
+    v = pixels[:h, :w].reshape(h // b, b, w // b, b, 3)
+    plausible = ((v >= low[:, np.newaxis, :, np.newaxis, :])
+                 & (v <= high[:, np.newaxis, :, np.newaxis, :]) & np.isfinite(d))
+    size = np.where(plausible, np.abs(d), -1.0)
+    # Per block and channel, the FORGIVEN largest plausible deviations (exactly that many:
+    # ties of 8-bit codes must not forgive a whole block that is off by one code).
+    flat = size.transpose(0, 2, 4, 1, 3).reshape(h // b, w // b, 3, b * b)
+    largest = np.argsort(flat, axis=-1, kind="stable")[..., -FORGIVEN:]
+    chosen = np.zeros(flat.shape, dtype=bool)
+    np.put_along_axis(chosen, largest, True, axis=-1)
+    chosen &= flat > 0
+    forgiven = chosen.reshape(h // b, w // b, 3, b, b).transpose(0, 3, 1, 4, 2)
+    out = np.array(deviation, dtype=np.float64)
+    out[:h, :w] = np.where(forgiven, 0.0, d).reshape(h, w, 3)
+    return out
 
 
 def judge(z):
