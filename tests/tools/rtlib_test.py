@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """tools/rtlib, the tools' shared module: PFM files read and written in either byte order with
-rows the way round the renderer means them, and the provenance of a tree.
+rows the way round the renderer means them, the provenance of a tree, and the render checker's
+block test leaving out rare samples but not a region that differs.
   rtlib_test.py RENDERER      (a chapter's program: ch01_background renders a vertical gradient)
 """
 import os
@@ -12,7 +13,8 @@ import unittest
 
 sys.dont_write_bytecode = True  # leave no __pycache__ in tools/
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)), "..", "..", "tools"))
-from rtlib import pfm, provenance  # noqa: E402
+from rtlib import block_test, pfm, provenance  # noqa: E402
+import numpy as np  # noqa: E402
 
 RENDERER = None  # set from the command line
 
@@ -136,6 +138,51 @@ class Provenance(unittest.TestCase):
         self.assertEqual(set(m), {"cpu", "cores", "system", "platform", "host"})
         self.assertTrue(m["cpu"] and m["cores"] >= 1)
 
+
+
+class RareSamples(unittest.TestCase):
+    """block_test.forgive_rare on one 8 x 8 block (channel 0 of 3), our renders having seen
+    codes 0..90 around it."""
+    low, high = np.zeros((1, 1, 3)), np.full((1, 1, 3), 90.0)
+
+    def forgiven(self, pixels):
+        return block_test.forgive_rare(pixels - 0.0, pixels, self.low, self.high, 8)
+
+    def test_two_rare_samples_left_out(self):
+        pixels = np.zeros((8, 8, 3))
+        pixels[2, 3, 0] = pixels[5, 5, 0] = 90
+        self.assertEqual(np.abs(self.forgiven(pixels)).max(), 0)
+
+    def test_a_third_is_kept(self):
+        pixels = np.zeros((8, 8, 3))
+        pixels[2, 3, 0] = pixels[5, 5, 0] = 90
+        pixels[7, 0, 0] = 40
+        out = self.forgiven(pixels)
+        self.assertEqual(out[7, 0, 0], 40)
+        self.assertEqual(np.count_nonzero(out), 1)
+
+    def test_a_value_never_seen_is_kept(self):
+        pixels = np.zeros((8, 8, 3))
+        pixels[2, 3, 0] = 255  # beyond the 90 our renders reached: a speck, not a rare sample
+        self.assertEqual(self.forgiven(pixels)[2, 3, 0], 255)
+
+    def test_a_block_off_by_one_code_loses_two_pixels_only(self):
+        # Ties of 8-bit codes: exactly two of the 64 equal deviations are left out.
+        out = self.forgiven(np.ones((8, 8, 3)))
+        self.assertEqual(np.count_nonzero(out[..., 0] == 0), 2)
+        self.assertEqual(np.count_nonzero(out[..., 0] == 1), 62)
+
+    def test_a_nan_is_never_left_out(self):
+        pixels = np.zeros((8, 8, 3))
+        pixels[1, 1, 0] = np.nan
+        self.assertFalse(np.isfinite(self.forgiven(pixels)[1, 1, 0]))
+
+    def test_skew_moves_only_the_long_side(self):
+        z = np.array([[[5.0, -5.0, 5.0]]])
+        out = block_test.skew_adjusted(z, np.array([[[1.0, 1.0, 0.0]]]))
+        self.assertLess(out[0, 0, 0], 5.0)      # the long side's bound moved out
+        self.assertEqual(out[0, 0, 1], -5.0)   # the short side's kept
+        self.assertEqual(out[0, 0, 2], 5.0)    # no skew, no change
 
 if __name__ == "__main__":
     RENDERER = sys.argv.pop(1)
