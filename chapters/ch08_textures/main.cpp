@@ -12,6 +12,7 @@
 #include "checker_scene.h"
 #include "globe_scene.h"
 #include "rt/integrators/path_tracer.h"
+#include "rt/program/asset_path.h"
 #include "rt/program/command_line.h"
 
 int main(int argc, char** argv) {
@@ -20,7 +21,7 @@ int main(int argc, char** argv) {
     add_layout_seed_option(cli);
     add_texture_decoding_option(cli);
     // The project's own equirectangular map, made by tools/make-globe-texture.
-    std::string texture_file = RT_ASSET_DIR "/globe.png";
+    std::string texture_file = rt::asset_path("globe.png");
     std::string which        = "globe";
     cli.app()
         .add_option("--texture", texture_file, "Equirectangular image for the globe")

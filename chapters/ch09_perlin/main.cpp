@@ -9,6 +9,7 @@
 #include "ch08_textures/texture_decoding_option.h"
 #include "perlin_spheres.h"
 #include "rt/integrators/path_tracer.h"
+#include "rt/program/asset_path.h"
 #include "rt/program/command_line.h"
 
 int main(int argc, char** argv) {
@@ -16,7 +17,7 @@ int main(int argc, char** argv) {
     add_fresnel_option(cli);
     add_layout_seed_option(cli);
     add_texture_decoding_option(cli);
-    std::string which = "marble", texture_file = RT_ASSET_DIR "/globe.png";
+    std::string which = "marble", texture_file = rt::asset_path("globe.png");
     cli.app()
         .add_option("--scene", which, "marble (book 2), or globe: the image texture beside it")
         ->check(CLI::IsMember({"marble", "globe"}))

@@ -10,6 +10,7 @@
 #include "ch08_textures/texture_decoding_option.h"
 #include "final_scene.h"
 #include "rt/integrators/path_tracer.h"
+#include "rt/program/asset_path.h"
 #include "rt/program/command_line.h"
 
 int main(int argc, char** argv) {
@@ -17,7 +18,7 @@ int main(int argc, char** argv) {
     add_fresnel_option(cli);
     add_layout_seed_option(cli);
     add_texture_decoding_option(cli);
-    std::string texture_file = RT_ASSET_DIR "/globe.png";
+    std::string texture_file = rt::asset_path("globe.png");
     cli.app().add_option("--texture", texture_file, "Image for the globe")->capture_default_str();
     return cli.run(argc, argv, [&] { return rt::path_trace(book2_final_scene(texture_file)); });
 }

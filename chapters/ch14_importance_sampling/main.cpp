@@ -17,6 +17,7 @@
 #include "ch08_textures/texture_decoding_option.h"
 #include "rt/integrators/mixture_tracer.h"
 #include "rt/integrators/path_tracer.h"
+#include "rt/program/asset_path.h"
 #include "rt/program/command_line.h"
 #include "scene_catalog.h"
 
@@ -25,7 +26,7 @@ int main(int argc, char** argv) {
     add_fresnel_option(cli);
     add_layout_seed_option(cli);
     add_texture_decoding_option(cli);
-    std::string which = "ch14", integrator = "light", texture_file = RT_ASSET_DIR "/globe.png";
+    std::string which = "ch14", integrator = "light", texture_file = rt::asset_path("globe.png");
     std::vector<std::string> names = scene_names();
     names.insert(names.begin(), "ch14");
     cli.app()

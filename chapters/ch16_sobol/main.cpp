@@ -18,6 +18,7 @@
 #include "rt/integrators/mis_tracer.h"
 #include "rt/integrators/mixture_tracer.h"
 #include "rt/integrators/path_tracer.h"
+#include "rt/program/asset_path.h"
 #include "rt/program/command_line.h"
 #include "rt/samplers/sobol_sampler.h"
 
@@ -27,7 +28,7 @@ int main(int argc, char** argv) {
     add_layout_seed_option(cli);
     add_texture_decoding_option(cli);
     std::string which = "ch14", integrator = "mis", samples = "sobol";
-    std::string texture_file       = RT_ASSET_DIR "/globe.png";
+    std::string texture_file       = rt::asset_path("globe.png");
     std::vector<std::string> names = scene_names();
     names.insert(names.begin(), "ch14");
     cli.app()

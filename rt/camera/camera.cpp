@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "rt/core/exercise.h"
 #include "rt/core/validate.h"
 
 namespace rt {
@@ -13,6 +14,7 @@ void camera::initialize(const film& f) {
 
 void camera::place_viewport(const film& f, const point3& eye, const vec3& u, const vec3& v,
                             const vec3& w, real distance) {
+    // [exercise camera::place_viewport begin]
     center            = eye;
     real vp_height    = 2 * std::tan(degrees_to_radians(vfov) / 2) * distance;
     real vp_width     = vp_height * (real(f.width) / real(f.height));
@@ -22,6 +24,7 @@ void camera::place_viewport(const film& f, const point3& eye, const vec3& u, con
     pixel_dv          = viewport_v / real(f.height);
     point3 upper_left = center - distance * w - viewport_u / 2 - viewport_v / 2;
     pixel00           = upper_left + real(0.5) * (pixel_du + pixel_dv);
+    // [exercise camera::place_viewport end]
 }
 
 point3 camera::pixel_sample(int i, int j, sampler& s) const {

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "rt/core/exercise.h"
 #include "rt/core/vec3.h"
 
 namespace rt {
@@ -13,11 +14,13 @@ class onb {
   public:
     // n must be a unit vector; it becomes the basis' w (local +z) axis.
     explicit onb(const vec3& n) : axis{vec3(), vec3(), n} {
+        // [exercise onb::onb begin]
         real sign = std::copysign(real(1), n.z());
         real a    = -1 / (sign + n.z());
         real b    = n.x() * n.y() * a;
         axis[0]   = vec3(1 + sign * n.x() * n.x() * a, sign * b, -sign * n.x());
         axis[1]   = vec3(b, sign + n.y() * n.y() * a, -n.y());
+        // [exercise onb::onb end]
     }
 
     const vec3& u() const { return axis[0]; }

@@ -6,6 +6,7 @@
 
 #include <limits>
 
+#include "rt/core/exercise.h"
 #include "rt/core/interval.h"
 #include "rt/core/ray.h"
 
@@ -45,8 +46,10 @@ struct hit_record {
 
     // outward_normal must be unit length.
     void set_face_normal(const ray& r, const vec3& outward_normal) {
+        // [exercise hit_record::set_face_normal begin]
         front_face = dot(r.direction(), outward_normal) < 0;
         normal     = front_face ? outward_normal : -outward_normal;
+        // [exercise hit_record::set_face_normal end]
     }
 };
 

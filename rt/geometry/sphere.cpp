@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "rt/core/exercise.h"
 #include "rt/core/validate.h"
 
 namespace rt {
@@ -25,11 +26,13 @@ constexpr real sphere_error_scale = 8 * std::numeric_limits<real>::epsilon();
 // Stable: q never cancels, since b and sign(b) sqrt(...) add with the same sign.
 // sqrt(b^2 - a c) = sqrt(a * discriminant) = sqrt(a2_discriminant / a).
 inline void sphere_roots(real a, real b, real c, real a2_discriminant, real& t_near, real& t_far) {
+    // [exercise sphere_roots begin]
     real q = -(b + std::copysign(std::sqrt(a2_discriminant / a), b));
     t_far  = q / a;
     // q = 0 only for a ray that starts on the sphere and grazes it: both roots are then 0.
     t_near = q != 0 ? c / q : t_far;
     if (t_near > t_far) std::swap(t_near, t_far);
+    // [exercise sphere_roots end]
 }
 
 // The root a hit inside ray_t takes: the nearer one if ray_t holds it, else the farther.

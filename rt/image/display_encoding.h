@@ -6,12 +6,16 @@
 #include <cmath>
 #include <cstdint>
 
+#include "rt/core/exercise.h"
+
 namespace rt {
 
 inline double linear_to_srgb(double linear) {
+    // [exercise linear_to_srgb begin]
     if (!(linear > 0)) return 0;  // also maps NaN to 0, so no bad pixel can turn bright
     if (linear >= 1) return 1;
     return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1 / 2.4) - 0.055;
+    // [exercise linear_to_srgb end]
 }
 
 inline double srgb_to_linear(double encoded) {

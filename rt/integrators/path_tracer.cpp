@@ -1,5 +1,6 @@
 #include "rt/integrators/path_tracer.h"
 
+#include "rt/core/exercise.h"
 #include "rt/core/validate.h"
 #include "rt/materials/material.h"
 #include "rt/render/ray_count.h"
@@ -25,10 +26,12 @@ color path_tracer::radiance(const ray& camera_ray, sampler& s, int max_depth) co
         }
         radiance += throughput * rec.mat->emitted(r, rec);  // [ch10]
         s.start_segment(segment);                           // [ch16] the layout of sampler.h
+        // [exercise path_tracer::radiance begin]
         const std::optional<scatter_sample> next = rec.mat->scatter(r, rec, s);
         if (!next) break;  // absorbed
         throughput = throughput * next->weight;
         r          = next->scattered;
+        // [exercise path_tracer::radiance end]
     }
     return radiance;
 }

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "rt/core/exercise.h"
 #include "rt/core/validate.h"
 #include "rt/geometry/spawn_ray.h"
 #include "rt/materials/optics.h"
@@ -39,6 +40,7 @@ real dielectric::reflectance(real cos_theta, real eta) const {
 
 std::optional<scatter_sample> dielectric::scatter(const ray& r_in, const hit_record& rec,
                                                   sampler& s) const {
+    // [exercise dielectric::scatter begin]
     real choice    = s.next_1d();
     real eta       = rec.front_face ? 1 / ior : ior;
     vec3 unit_dir  = unit_vector(r_in.direction());
@@ -50,6 +52,7 @@ std::optional<scatter_sample> dielectric::scatter(const ray& r_in, const hit_rec
 
     return scatter_sample{spawn_ray(rec, r_in, direction),
                           color(1, 1, 1)};  // clear: absorbs nothing
+    // [exercise dielectric::scatter end]
 }
 
 }  // namespace rt

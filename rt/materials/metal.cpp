@@ -1,5 +1,6 @@
 #include "rt/materials/metal.h"
 
+#include "rt/core/exercise.h"
 #include "rt/core/validate.h"
 #include "rt/geometry/spawn_ray.h"
 #include "rt/materials/optics.h"
@@ -14,12 +15,14 @@ metal::metal(const color& a, real f) : albedo(a), fuzz(f) {
 
 std::optional<scatter_sample> metal::scatter(const ray& r_in, const hit_record& rec,
                                              sampler& s) const {
+    // [exercise metal::scatter begin]
     sample2 ball_uv = s.next_2d();
     real ball_w     = s.next_1d();
     vec3 reflected  = unit_vector(reflect(r_in.direction(), rec.normal));
     vec3 direction  = reflected + fuzz * sample_uniform_ball(ball_uv, ball_w);
     if (!(dot(direction, rec.normal) > 0)) return std::nullopt;  // fuzzed under the surface
     return scatter_sample{spawn_ray(rec, r_in, direction), albedo};
+    // [exercise metal::scatter end]
 }
 
 }  // namespace rt

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "rt/core/exercise.h"
 #include "rt/core/vec3.h"
 
 namespace rt {
@@ -15,17 +16,21 @@ namespace rt {
 // result unit length. Callers check total internal reflection first (eta sin(theta) > 1); the
 // clamp only absorbs rounding, so the square root never sees a negative number.
 inline vec3 refract(const vec3& uv, const vec3& n, real eta) {
+    // [exercise refract begin]
     real cos_theta      = std::min(dot(-uv, n), real(1));
     vec3 r_out_perp     = eta * (uv + cos_theta * n);
     real parallel_sq    = std::max(real(0), 1 - r_out_perp.length_squared());
     vec3 r_out_parallel = -std::sqrt(parallel_sq) * n;
     return r_out_perp + r_out_parallel;
+    // [exercise refract end]
 }
 
 // True when a ray at this angle cannot leave the denser medium: eta sin(theta) > 1.
 inline bool total_internal_reflection(real cos_theta, real eta) {
+    // [exercise total_internal_reflection begin]
     real sin_theta = std::sqrt(std::max(real(0), 1 - cos_theta * cos_theta));
     return eta * sin_theta > 1;
+    // [exercise total_internal_reflection end]
 }
 
 // cos(theta_t) of the transmitted ray by Snell's law, or -1 under total internal reflection.
@@ -40,6 +45,7 @@ inline real transmitted_cosine(real cos_incident, real eta) {
 // Reflectance is the same both ways along one light path (Helmholtz), and only the cosine on the
 // less dense side makes the formula agree with Fresnel there. 1 under total internal reflection.
 inline real schlick_reflectance(real cos_incident, real eta) {
+    // [exercise schlick_reflectance begin]
     real cos_theta = cos_incident;
     if (eta > 1) {
         cos_theta = transmitted_cosine(cos_incident, eta);
@@ -49,6 +55,7 @@ inline real schlick_reflectance(real cos_incident, real eta) {
     r0      = r0 * r0;
     real c  = 1 - cos_theta;
     return r0 + (1 - r0) * c * c * c * c * c;
+    // [exercise schlick_reflectance end]
 }
 
 // The book's form: the incident cosine on both sides. Leaving glass it reflects too little near

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "rt/core/exercise.h"
 #include "rt/core/vec3.h"
 
 namespace rt {
@@ -18,11 +19,13 @@ struct background {
     static background uniform(const color& c) { return {c, c}; }
 
     color radiance(const vec3& direction) const {
+        // [exercise background::radiance begin]
         real a = real(0.5) * (direction.y() / direction.length() + 1);
         // std::lerp, not (1 - a) bottom + a top: it is exact at both ends and returns c itself
         // when bottom == top == c, so a uniform background is uniform to the last bit.
         return color(std::lerp(bottom.x(), top.x(), a), std::lerp(bottom.y(), top.y(), a),
                      std::lerp(bottom.z(), top.z(), a));
+        // [exercise background::radiance end]
     }
 };
 

@@ -1,8 +1,11 @@
 #include "rt/scene/hittable_list.h"
 
+#include "rt/core/exercise.h"
+
 namespace rt {
 
 bool hittable_list::hit(const ray& r, interval ray_t, hit_record& rec) const {
+    // [exercise hittable_list::hit begin]
     bool hit_anything = false;
     for (const auto& object : objects) {
         if (object->hit(r, ray_t, rec)) {
@@ -11,6 +14,7 @@ bool hittable_list::hit(const ray& r, interval ray_t, hit_record& rec) const {
         }
     }
     return hit_anything;
+    // [exercise hittable_list::hit end]
 }
 
 // [ch14 begin]

@@ -117,7 +117,8 @@ TEST_CASE("camera: the field of view sets the viewport's height", "[camera][ch01
     }
 }
 
-TEST_CASE("camera: get_ray draws exactly 2 sampler dimensions, the jitter", "[camera][ch01]") {
+TEST_CASE("camera: get_ray draws exactly 2 sampler dimensions, the jitter",
+          "[camera][ch01][draw-order]") {
     // What the estimator draws next (the first bounce) must be the sampler's dimension 2: a
     // camera that drew more or fewer would move every later random choice (sampler.h).
     rt::camera cam;

@@ -117,7 +117,7 @@ TEST_CASE("lambertian: an albedo outside 0..1 throws a user_error naming it", "[
 }
 
 TEST_CASE("lambertian: scatter draws exactly 2 sampler dimensions, as scatter_diffuse does",
-          "[ch03]") {
+          "[ch03][draw-order]") {
     // The material's part of the sampler's layout (sampler.h): what the next bounce draws must
     // be the dimension after these 2. And the direction is scatter_diffuse's, bit for bit.
     rt::lambertian mat(color(real(0.3), real(0.6), real(0.9)));

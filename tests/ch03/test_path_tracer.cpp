@@ -238,7 +238,7 @@ TEST_CASE("path_tracer: the weights of a path's bounces multiply, first to last"
 }
 
 TEST_CASE("path_tracer: a path draws only what its materials draw, 2 per Lambertian bounce",
-          "[ch03]") {
+          "[ch03][draw-order]") {
     // A Lambertian floor under a uniform sky, max_depth 2: the camera ray hits the floor, the
     // bounce leaves it for the sky. The path must draw exactly the bounce's 2 dimensions
     // (sampler.h), so whatever comes next sees the dimension after them.

@@ -63,7 +63,8 @@ TEST_CASE("metal: fuzzed rays never leave below the surface", "[ch04]") {
     CHECK(absorbed > 0);  // the test would be empty if no ray went below
 }
 
-TEST_CASE("metal: scatter draws exactly 3 sampler dimensions, even as a perfect mirror", "[ch04]") {
+TEST_CASE("metal: scatter draws exactly 3 sampler dimensions, even as a perfect mirror",
+          "[ch04][draw-order]") {
     // The material's part of the sampler's layout (sampler.h): a point in the unit ball, drawn
     // whatever the fuzz, so that changing the fuzz never moves the samples of a later bounce.
     rt::ray in(point3(-2, 2, 0), vec3(1, -1, 0));

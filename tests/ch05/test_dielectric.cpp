@@ -114,7 +114,7 @@ TEST_CASE("dielectric: total internal reflection inside glass reflects, no NaN",
     }
 }
 
-TEST_CASE("dielectric: scatter draws exactly 1 sampler dimension", "[ch05]") {
+TEST_CASE("dielectric: scatter draws exactly 1 sampler dimension", "[ch05][draw-order]") {
     // The choice between reflection and refraction; drawn even under total internal
     // reflection, so that the layout of later bounces does not depend on the angle.
     auto glass           = std::make_shared<rt::dielectric>(1.5);

@@ -220,7 +220,7 @@ TEST_CASE("thin_lens_camera: focus_dist moves the sharp plane", "[camera][ch06]"
 }
 
 TEST_CASE("thin_lens_camera: aperture 0 draws 2 sampler dimensions, aperture > 0 draws 4",
-          "[camera][ch06]") {
+          "[camera][ch06][draw-order]") {
     // A scene pays only for what its camera has (sampler.h): a pinhole-like thin lens leaves
     // the first bounce the same dimension as chapter 01's camera does.
     rt::thin_lens_camera pinhole;

@@ -89,7 +89,7 @@ TEST_CASE("thin_lens_camera: ray times are uniform from shutter_open up to shutt
 TEST_CASE(
     "thin_lens_camera: an open shutter draws exactly one more dimension, after the jitter "
     "and the lens, and its time is at least open and below close",
-    "[camera][ch07]") {
+    "[camera][ch07][draw-order]") {
     // For a pinhole and for a lens, the same pixel samples with the shutter closed (open ==
     // close, drawing nothing) and open: the open camera leaves the sampler exactly one number
     // further on, and its origin and direction are those of the closed camera bit for bit (the

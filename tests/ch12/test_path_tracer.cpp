@@ -33,7 +33,7 @@ using rt_test::ray_recorder;
 TEST_CASE(
     "path_tracer: media draw no sampler dimensions, and each path segment is a ray of its "
     "own",
-    "[ch12]") {
+    "[ch12][draw-order]") {
     // A Lambertian floor under a uniform sky, max_depth 2: segment 1 (the camera ray) hits the
     // floor, segment 2 leaves it for the sky, so the path returns the albedo. Both segments
     // cross a thin haze (density 1e-9: over a few units it scatters with chance ~1e-8, and

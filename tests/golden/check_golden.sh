@@ -12,6 +12,8 @@
 # judged by step 3 alone, against the same converged (double) reference.
 # RT_GOLDEN_NOISE_ONLY=1 in the environment skips step 2 too: tools/bug-zoo judges a mistake the
 # way a student's correct code is judged, whose random numbers need not be drawn in our order.
+# RT_GOLDEN_KEEP=DIR (tools/exercise check) keeps the render there, beside a difference map
+# against the converged reference (|render - reference|, four times brighter), and says where.
 set -euo pipefail
 exe=$1 name=$2 refs=$3 noise_compare=$4 width=$5 spp=$6 seed=$7 converged_spp=$8
 precision=${9:-double}
@@ -39,6 +41,14 @@ for ext in "${exts[@]}"; do
         status=1
     fi
 done
+if [ -n "${RT_GOLDEN_KEEP:-}" ]; then
+    mkdir -p "$RT_GOLDEN_KEEP"
+    cp "$tmp/$name.png" "$RT_GOLDEN_KEEP/$name.png"
+    oiiotool "$tmp/$name.pfm" "$refs/$name.converged.pfm" --absdiff --mulc 4 \
+        -o "$RT_GOLDEN_KEEP/$name.difference.png"
+    echo "render: $RT_GOLDEN_KEEP/$name.png"
+    echo "difference map: $RT_GOLDEN_KEEP/$name.difference.png (|render - converged| x 4)"
+fi
 if ! "$noise_compare" "$tmp/$name.pfm" "$tmp/$name.variance.pfm" "$spp" \
     "$refs/$name.converged.pfm" "$refs/$name.converged-variance.pfm" "$converged_spp"; then
     echo "FAIL: $name does not match its converged reference within its noise"

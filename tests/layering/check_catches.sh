@@ -79,7 +79,7 @@ lacks() { grep -qF -- "$1" <<<"$out" && fail "'$1' should be hidden: $out" || ec
 case_check_passes_clean_fixture() {
     run check-layers --root "$repo"
     if [ "$rc" -ne 0 ] || [ -n "$err" ]; then fail "clean fixture: exit code $rc; stderr: $err"
-    elif [ "$out" != "check-layers: 10 files, 14 includes, 4 marked lines: layering holds" ]; then
+    elif [ "$out" != "check-layers: 10 files, 14 includes, 4 marked lines, 0 exercise regions: layering holds" ]; then
         fail "clean fixture: unexpected summary '$out'"
     else echo "ok $case: $out"; fi
 }
@@ -115,6 +115,51 @@ case_check_catches_unbalanced_markers() {
     make_fixture "$repo.3" && repo=$repo.3
     sed -i 's|// \[ch02 begin\]|&\n// [ch02 begin]|' "$repo/rt/base.h"
     breach "nested begin" 1 "rt/base.h:10" "do not nest"
+}
+# An exercise region of the fixture: base_value's body, in a file that includes the header of
+# the stubs' function.
+add_exercise() {
+    printf '# fixture\nch01  base.h base.cpp core/exercise.h\nch02  extra.h\nprogram  tool.h\n' \
+        >"$repo/rt/layers.txt"
+    mkdir -p "$repo/rt/core" && printf '#pragma once\n' >"$repo/rt/core/exercise.h"
+    printf '%s\n' '#include "base.h"' '#include "rt/core/exercise.h"' 'int base_value() {' \
+        '    // [exercise base_value begin]' '    return base{}.value;' \
+        '    // [exercise base_value end]' '}' >"$repo/rt/base.cpp"
+}
+case_check_catches_bad_exercise_regions() {
+    add_exercise
+    run check-layers --root "$repo"
+    if [ "$rc" -ne 0 ] || ! grep -qF "1 exercise regions" <<<"$out"; then
+        fail "a good exercise region: exit $rc, $out $err"
+    else echo "ok $case: a good exercise region passes"; fi
+    sed -i '/rt\/core\/exercise.h/d' "$repo/rt/base.cpp"
+    breach "region without the stubs' header" 1 "rt/base.cpp" "does not include rt/core/exercise.h"
+    make_fixture "$repo.2" && repo=$repo.2 && add_exercise
+    sed -i '/exercise base_value end/d' "$repo/rt/base.cpp"
+    breach "begin without end" 1 "rt/base.cpp:4" "exercise 'base_value' has no end"
+    make_fixture "$repo.3" && repo=$repo.3 && add_exercise
+    sed -i '/exercise base_value begin/d' "$repo/rt/base.cpp"
+    breach "end without begin" 1 "rt/base.cpp:5" "ends without a begin"
+    make_fixture "$repo.4" && repo=$repo.4 && add_exercise
+    sed -i 's|    return base{}.value;|    // [exercise inner begin]\n&\n    // [exercise inner end]|' \
+        "$repo/rt/base.cpp"
+    breach "nested regions" 2 "rt/base.cpp:5" "do not nest"
+    make_fixture "$repo.5" && repo=$repo.5 && add_exercise
+    sed -i '/    return base{}.value;/d' "$repo/rt/base.cpp"
+    breach "empty region" 1 "rt/base.cpp:5" "exercise 'base_value' is empty"
+    make_fixture "$repo.6" && repo=$repo.6 && add_exercise
+    sed -i 's|    int value = 1;|#include "rt/core/exercise.h"\n    // [exercise span begin]|; s|    int last = 3;|    // [exercise span end]\n&|' \
+        "$repo/rt/base.h"
+    breach "region across a later chapter's lines" 1 "rt/base.h" "more than one chapter"
+    make_fixture "$repo.7" && repo=$repo.7 && add_exercise
+    printf '%s\n' '#pragma once' '#include "rt/core/exercise.h"' 'inline int twice() {' \
+        '    // [exercise base_value begin]' '    return 2;' '    // [exercise base_value end]' \
+        '}' >"$repo/rt/base.h"
+    breach "one name twice" 1 "exercise 'base_value' is also at"
+    make_fixture "$repo.8" && repo=$repo.8 && add_exercise
+    printf '%s\n' '#include "rt/core/exercise.h"' 'int two() {' '    // [exercise two begin]' \
+        '    return 2;' '    // [exercise two end]' '}' >"$repo/tests/ch01/test_two.cpp"
+    breach "a region in a test" 1 "tests/ch01/test_two.cpp" "belong in rt/ or chapters/"
 }
 case_check_catches_unlisted_library_file() {
     echo '#pragma once' >"$repo/rt/stray.h"

@@ -22,6 +22,7 @@ make_fixture() {
     mkdir -p "$fixture/tools/zoo" "$fixture/rt" "$fixture/chapters/ch01_first" \
         "$fixture/chapters/ch02_second"
     cp "$repo/tools/bug-zoo" "$repo/tools/check-layers" "$fixture/tools/"
+    cp -r "$repo/tools/rtlib" "$fixture/tools/"
     printf '%s\n' "ch01 one.h" "ch02 two.h" >"$fixture/rt/layers.txt"
     cat >"$fixture/rt/one.h" <<'CODE'
 inline int one() { return 1; }
