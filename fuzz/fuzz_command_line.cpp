@@ -69,10 +69,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
     rt::command_line cli(program);
     std::string texture = "globe.png", scene = "globe";
-    cli.app().add_option("--texture", texture, "Equirectangular image for the globe");
-    cli.app()
-        .add_option("--scene", scene, "globe or checker")
-        ->check(CLI::IsMember({"globe", "checker"}));
+    cli.add_text("--texture", texture, "Equirectangular image for the globe", false);
+    cli.add_choice("--scene", scene, {"globe", "checker"}, "globe or checker", false);
 
     std::string err;
     const std::optional<int> stop = parse_caught(cli, argv, err);

@@ -11,9 +11,8 @@
 int main(int argc, char** argv) {
     rt::command_line cli("ch03_diffuse");
     std::string which = "floor";
-    cli.app()
-        .add_option("--scene", which, "floor (spheres on a rectangle), or book (book 1's image 12)")
-        ->check(CLI::IsMember({"floor", "book"}));
+    cli.add_choice("--scene", which, {"floor", "book"},
+                   "floor (spheres on a rectangle), or book (book 1's image 12)", false);
     return cli.run(argc, argv, [&] {
         return rt::path_trace(which == "floor" ? matte_spheres_on_floor() : book_diffuse_spheres());
     });

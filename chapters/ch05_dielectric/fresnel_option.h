@@ -10,15 +10,13 @@
 #include "rt/program/command_line.h"
 
 inline void add_fresnel_option(rt::command_line& cli) {
-    cli.app()
-        .add_option_function<std::string>(
-            "--fresnel",
-            [](const std::string& form) {
-                rt::set_default_fresnel_model(form == "book"    ? rt::fresnel_model::book_schlick
-                                              : form == "exact" ? rt::fresnel_model::exact
-                                                                : rt::fresnel_model::schlick);
-            },
-            "Glass reflectance: schlick (ours, the cosine on the less dense side; default), book "
-            "(the book's incident cosine), or exact (Fresnel)")
-        ->check(CLI::IsMember({"schlick", "book", "exact"}));
+    cli.add_choice_action(
+        "--fresnel", {"schlick", "book", "exact"},
+        "Glass reflectance: schlick (ours, the cosine on the less dense side; default), book "
+        "(the book's incident cosine), or exact (Fresnel)",
+        [](const std::string& form) {
+            rt::set_default_fresnel_model(form == "book"    ? rt::fresnel_model::book_schlick
+                                          : form == "exact" ? rt::fresnel_model::exact
+                                                            : rt::fresnel_model::schlick);
+        });
 }

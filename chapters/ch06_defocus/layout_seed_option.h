@@ -11,7 +11,8 @@
 #include "rt/program/command_line.h"
 
 inline void add_layout_seed_option(rt::command_line& cli) {
-    cli.app().add_option_function<std::uint32_t>(
-        "--layout-seed", [](std::uint32_t seed) { rt::set_book_layout_seed(seed); },
-        "srand() seed of the book's random layouts and Perlin tables (default 1, the book's)");
+    cli.add_uint32_action(
+        "--layout-seed",
+        "srand() seed of the book's random layouts and Perlin tables (default 1, the book's)",
+        [](std::uint32_t seed) { rt::set_book_layout_seed(seed); });
 }

@@ -18,17 +18,13 @@ int main(int argc, char** argv) {
     add_layout_seed_option(cli);
     std::optional<rt::real> aperture, focus;
     std::string which = "glass";
-    cli.app()
-        .add_option("--aperture", aperture, "Lens diameter (default 2.0; final: 0.105)")
-        ->check(rt::number_at_least(0));
-    cli.app()
-        .add_option("--focus-dist", focus, "Distance to the sharp plane (default: lookat)")
-        ->check(rt::number_above(0));
-    cli.app()
-        .add_option("--scene", which,
-                    "glass, book (book 1's depth of field, its image 22), or final (book 1's "
-                    "random spheres)")
-        ->check(CLI::IsMember({"glass", "book", "final"}));
+    cli.add_number("--aperture", aperture, "Lens diameter (default 2.0; final: 0.105)", 0, true);
+    cli.add_number("--focus-dist", focus, "Distance to the sharp plane (default: lookat)", 0,
+                   false);
+    cli.add_choice("--scene", which, {"glass", "book", "final"},
+                   "glass, book (book 1's depth of field, its image 22), or final (book 1's "
+                   "random spheres)",
+                   false);
     return cli.run(argc, argv, [&] {
         if (which == "book") return rt::path_trace(book_depth_of_field(aperture, focus));
         return rt::path_trace(which == "glass" ? glass_scene_through_lens(aperture, focus)

@@ -19,15 +19,10 @@ int main(int argc, char** argv) {
     add_layout_seed_option(cli);
     std::string accel = "bvh";
     std::string which = "bouncing";
-    cli.app()
-        .add_option("--accel", accel, "bvh, or list to test every sphere (for comparison)")
-        ->check(CLI::IsMember({"bvh", "list"}))
-        ->capture_default_str();
-    cli.app()
-        .add_option("--scene", which,
-                    "bouncing (book 2's bouncing spheres), or ch06-final (book 1's final scene)")
-        ->check(CLI::IsMember({"bouncing", "ch06-final"}))
-        ->capture_default_str();
+    cli.add_choice("--accel", accel, {"bvh", "list"},
+                   "bvh, or list to test every sphere (for comparison)");
+    cli.add_choice("--scene", which, {"bouncing", "ch06-final"},
+                   "bouncing (book 2's bouncing spheres), or ch06-final (book 1's final scene)");
     return cli.run(argc, argv, [&] {
         const bool use_bvh = accel == "bvh";
         return rt::path_trace(which == "bouncing" ? bouncing_spheres(use_bvh)

@@ -23,15 +23,10 @@ int main(int argc, char** argv) {
     // The project's own equirectangular map, made by tools/make-globe-texture.
     std::string texture_file = rt::asset_path("globe.png");
     std::string which        = "globe";
-    cli.app()
-        .add_option("--texture", texture_file, "Equirectangular image for the globe")
-        ->capture_default_str();
-    cli.app()
-        .add_option("--scene", which,
-                    "globe (book 2's earth), checker (solid and checkered), bouncing (book 2's "
-                    "bouncing spheres on a checker), or two-spheres (book 2's checkered spheres)")
-        ->check(CLI::IsMember({"globe", "checker", "bouncing", "two-spheres"}))
-        ->capture_default_str();
+    cli.add_text("--texture", texture_file, "Equirectangular image for the globe");
+    cli.add_choice("--scene", which, {"globe", "checker", "bouncing", "two-spheres"},
+                   "globe (book 2's earth), checker (solid and checkered), bouncing (book 2's "
+                   "bouncing spheres on a checker), or two-spheres (book 2's checkered spheres)");
     return cli.run(argc, argv, [&] {
         if (which == "bouncing") return rt::path_trace(bouncing_spheres_on_checker());
         if (which == "two-spheres") return rt::path_trace(two_checkered_spheres());

@@ -10,14 +10,12 @@
 #include "rt/textures/image_texture.h"
 
 inline void add_texture_decoding_option(rt::command_line& cli) {
-    cli.app()
-        .add_option_function<std::string>(
-            "--texture-decoding",
-            [](const std::string& how) {
-                rt::set_default_texel_decoding(how == "book" ? rt::texel_decoding::bytes_over_255
-                                                             : rt::texel_decoding::srgb);
-            },
-            "Image texture bytes: srgb (decoded to linear light; default) or book (divided by "
-            "255, as the book does)")
-        ->check(CLI::IsMember({"srgb", "book"}));
+    cli.add_choice_action(
+        "--texture-decoding", {"srgb", "book"},
+        "Image texture bytes: srgb (decoded to linear light; default) or book (divided by "
+        "255, as the book does)",
+        [](const std::string& how) {
+            rt::set_default_texel_decoding(how == "book" ? rt::texel_decoding::bytes_over_255
+                                                         : rt::texel_decoding::srgb);
+        });
 }

@@ -18,11 +18,9 @@ int main(int argc, char** argv) {
     add_layout_seed_option(cli);
     add_texture_decoding_option(cli);
     std::string which = "marble", texture_file = rt::asset_path("globe.png");
-    cli.app()
-        .add_option("--scene", which, "marble (book 2), or globe: the image texture beside it")
-        ->check(CLI::IsMember({"marble", "globe"}))
-        ->capture_default_str();
-    cli.app().add_option("--texture", texture_file, "Image for the globe")->capture_default_str();
+    cli.add_choice("--scene", which, {"marble", "globe"},
+                   "marble (book 2), or globe: the image texture beside it");
+    cli.add_text("--texture", texture_file, "Image for the globe");
     return cli.run(argc, argv,
                    [&] { return rt::path_trace(perlin_spheres(texture_file, which == "globe")); });
 }

@@ -18,10 +18,8 @@ int main(int argc, char** argv) {
     add_layout_seed_option(cli);
     add_texture_decoding_option(cli);
     std::string which = "simple-light";
-    cli.app()
-        .add_option("--scene", which,
-                    "simple-light (book 2's two lights; default), or quads (its five quads)")
-        ->check(CLI::IsMember({"simple-light", "quads"}));
+    cli.add_choice("--scene", which, {"simple-light", "quads"},
+                   "simple-light (book 2's two lights; default), or quads (its five quads)", false);
     return cli.run(argc, argv, [&] {
         return rt::path_trace(which == "quads" ? book_quads() : simple_light());
     });

@@ -19,10 +19,8 @@ int main(int argc, char** argv) {
     add_layout_seed_option(cli);
     add_texture_decoding_option(cli);
     std::string which = "cornell";
-    cli.app()
-        .add_option("--scene", which, "cornell (book 2's box), or rotations (about x, y and z)")
-        ->check(CLI::IsMember({"cornell", "rotations"}))
-        ->capture_default_str();
+    cli.add_choice("--scene", which, {"cornell", "rotations"},
+                   "cornell (book 2's box), or rotations (about x, y and z)");
     return cli.run(argc, argv, [&] {
         return rt::path_trace(which == "cornell" ? cornell_box() : turned_boxes());
     });

@@ -19,6 +19,6 @@ int main(int argc, char** argv) {
     add_layout_seed_option(cli);
     add_texture_decoding_option(cli);
     std::string texture_file = rt::asset_path("globe.png");
-    cli.app().add_option("--texture", texture_file, "Image for the globe")->capture_default_str();
+    cli.add_text("--texture", texture_file, "Image for the globe");
     return cli.run(argc, argv, [&] { return rt::path_trace(book2_final_scene(texture_file)); });
 }

@@ -30,17 +30,11 @@ int main(int argc, char** argv) {
     std::string which = "ch14", integrator = "mis", texture_file = rt::asset_path("globe.png");
     std::vector<std::string> names = scene_names();
     names.insert(names.begin(), "ch14");
-    cli.app()
-        .add_option("--scene", which,
-                    "ch14 (book 3's Cornell box), or chNN / chNN-NAME: an earlier chapter's scene")
-        ->check(CLI::IsMember(names))
-        ->capture_default_str();
-    cli.app()
-        .add_option("--integrator", integrator,
-                    "mis (next-event estimation with MIS), light (book 3), or path (chapter 03)")
-        ->check(CLI::IsMember({"mis", "light", "path"}))
-        ->capture_default_str();
-    cli.app().add_option("--texture", texture_file, "Image for globes")->capture_default_str();
+    cli.add_choice("--scene", which, names,
+                   "ch14 (book 3's Cornell box), or chNN / chNN-NAME: an earlier chapter's scene");
+    cli.add_choice("--integrator", integrator, {"mis", "light", "path"},
+                   "mis (next-event estimation with MIS), light (book 3), or path (chapter 03)");
+    cli.add_text("--texture", texture_file, "Image for globes");
     return cli.run(argc, argv, [&] {
         rt::scene scene =
             which == "ch14" ? book3_cornell_box() : scene_by_name(which, texture_file);

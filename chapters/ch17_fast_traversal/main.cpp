@@ -32,22 +32,14 @@ int main(int argc, char** argv) {
     std::string texture_file       = rt::asset_path("globe.png");
     std::vector<std::string> names = scene_names();
     names.insert(names.begin(), "ch14");
-    cli.app()
-        .add_option("--scene", which,
-                    "ch13 (book 2's final scene), ch14 (book 3's Cornell box), or chNN / "
-                    "chNN-NAME: an earlier chapter's scene")
-        ->check(CLI::IsMember(names))
-        ->capture_default_str();
-    cli.app()
-        .add_option("--integrator", integrator,
-                    "mis (chapter 15), light (chapter 14), or path (chapter 03)")
-        ->check(CLI::IsMember({"mis", "light", "path"}))
-        ->capture_default_str();
-    cli.app()
-        .add_option("--sampler", samples, "sobol (chapter 16), or independent (chapter 01)")
-        ->check(CLI::IsMember({"sobol", "independent"}))
-        ->capture_default_str();
-    cli.app().add_option("--texture", texture_file, "Image for globes")->capture_default_str();
+    cli.add_choice("--scene", which, names,
+                   "ch13 (book 2's final scene), ch14 (book 3's Cornell box), or chNN / "
+                   "chNN-NAME: an earlier chapter's scene");
+    cli.add_choice("--integrator", integrator, {"mis", "light", "path"},
+                   "mis (chapter 15), light (chapter 14), or path (chapter 03)");
+    cli.add_choice("--sampler", samples, {"sobol", "independent"},
+                   "sobol (chapter 16), or independent (chapter 01)");
+    cli.add_text("--texture", texture_file, "Image for globes");
     return cli.run(argc, argv, [&] {
         rt::scene scene = rt::with_fast_traversal(
             which == "ch14" ? book3_cornell_box() : scene_by_name(which, texture_file));

@@ -1,5 +1,6 @@
 #include "rt/program/command_line.h"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
 #include <exception>
@@ -8,6 +9,7 @@
 #include "rt/core/error.h"
 #include "rt/files/image_outputs.h"
 #include "rt/files/output_set.h"
+#include "rt/program/flag_checks.h"
 #include "rt/program/progress.h"
 #include "rt/render/film.h"
 
@@ -51,45 +53,78 @@ std::string sampler_name(const render_settings& s) {
 }  // namespace
 
 command_line::command_line(std::string program_name)
-    : program(std::move(program_name)), cli(program) {
+    : program(std::move(program_name)), cli(std::make_unique<CLI::App>(program)) {
     // A flag given twice takes its last value, as most Unix tools do.
-    cli.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
-    cli.add_option("--width", flags.width, "Image width in pixels (default: the scene's)")
+    cli->option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+    cli->add_option("--width", flags.width, "Image width in pixels (default: the scene's)")
         ->check(integer_in(1, 16384));
-    cli.add_option("--spp", flags.samples_per_pixel, "Samples per pixel (default: the scene's)")
+    cli->add_option("--spp", flags.samples_per_pixel, "Samples per pixel (default: the scene's)")
         ->check(integer_in(1, 1 << 20));
-    cli.add_option("--max-depth", flags.max_depth,
-                   "Ray segments per path at most (default: the scene's)")
+    cli->add_option("--max-depth", flags.max_depth,
+                    "Ray segments per path at most (default: the scene's)")
         ->check(integer_in(1, 10000));
-    cli.add_option("--seed", flags.seed, "Seed of the random streams")
+    cli->add_option("--seed", flags.seed, "Seed of the random streams")
         ->check(integer_in(0, UINT64_MAX))
         ->capture_default_str();
-    cli.add_option("--threads", flags.threads, "Worker threads; 0 = all cores")
+    cli->add_option("--threads", flags.threads, "Worker threads; 0 = all cores")
         ->check(integer_in(0, 1024))
         ->capture_default_str();
-    cli.add_option("--out", outputs.images, "Output image, .png or .pfm; may repeat")
+    cli->add_option("--out", outputs.images, "Output image, .png or .pfm; may repeat")
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
         ->check(output_file({".png", ".pfm"}));
-    cli.add_option("--variance-out", outputs.variance,
-                   "Also write the variance of each pixel's mean, as .pfm")
+    cli->add_option("--variance-out", outputs.variance,
+                    "Also write the variance of each pixel's mean, as .pfm")
         ->check(output_file({".pfm"}));
-    cli.add_option("--stats-out", outputs.stats,
-                   "Also write the record of the run (time, samples, rays, settings) as .json")
+    cli->add_option("--stats-out", outputs.stats,
+                    "Also write the record of the run (time, samples, rays, settings) as .json")
         ->check(stats_file());
-    cli.add_option("--crop", crop_text,
-                   "Render only the pixels X0 <= x < X1, Y0 <= y < Y1 (from the top-left); the "
-                   "image is the window's size")
+    cli->add_option("--crop", crop_text,
+                    "Render only the pixels X0 <= x < X1, Y0 <= y < Y1 (from the top-left); the "
+                    "image is the window's size")
         ->check(crop_syntax());
-    cli.add_option("--samples", samples_text,
-                   "Render only sample indices FROM <= k < TO of each pixel; --spp stays the "
-                   "whole render's count (TO <= spp)")
+    cli->add_option("--samples", samples_text,
+                    "Render only sample indices FROM <= k < TO of each pixel; --spp stays the "
+                    "whole render's count (TO <= spp)")
         ->check(samples_syntax());
-    cli.add_flag("--quiet", quiet, "No progress or summary on stderr");
-    for (const CLI::Option* option : cli.get_options()) shared_options.push_back(option);
+    cli->add_flag("--quiet", quiet, "No progress or summary on stderr");
+    for (const CLI::Option* option : cli->get_options()) shared_options.push_back(option);
+}
+
+command_line::~command_line() = default;
+
+void command_line::add_choice(const std::string& flag, std::string& value,
+                              const std::vector<std::string>& allowed, const std::string& help,
+                              bool show_default) {
+    CLI::Option* option = cli->add_option(flag, value, help)->check(CLI::IsMember(allowed));
+    if (show_default) option->capture_default_str();
+}
+
+void command_line::add_text(const std::string& flag, std::string& value, const std::string& help,
+                            bool show_default) {
+    CLI::Option* option = cli->add_option(flag, value, help);
+    if (show_default) option->capture_default_str();
+}
+
+void command_line::add_number(const std::string& flag, std::optional<real>& value,
+                              const std::string& help, double lo, bool lo_allowed) {
+    cli->add_option(flag, value, help)->check(lo_allowed ? number_at_least(lo) : number_above(lo));
+}
+
+void command_line::add_choice_action(const std::string& flag,
+                                     const std::vector<std::string>& allowed,
+                                     const std::string& help,
+                                     std::function<void(const std::string&)> act) {
+    cli->add_option_function<std::string>(flag, std::move(act), help)
+        ->check(CLI::IsMember(allowed));
+}
+
+void command_line::add_uint32_action(const std::string& flag, const std::string& help,
+                                     std::function<void(std::uint32_t)> act) {
+    cli->add_option_function<std::uint32_t>(flag, std::move(act), help);
 }
 
 render_settings command_line::with_flags(render_settings s) const {
-    auto given = [this](const char* flag) { return cli.count(flag) > 0; };
+    auto given = [this](const char* flag) { return cli->count(flag) > 0; };
     if (given("--width")) s.width = flags.width;
     if (given("--spp")) s.samples_per_pixel = flags.samples_per_pixel;
     if (given("--max-depth")) s.max_depth = flags.max_depth;
@@ -102,7 +137,7 @@ render_settings command_line::with_flags(render_settings s) const {
 
 std::vector<std::pair<std::string, std::string>> command_line::chapter_options() const {
     std::vector<std::pair<std::string, std::string>> options;
-    for (const CLI::Option* option : cli.get_options()) {
+    for (const CLI::Option* option : cli->get_options()) {
         if (std::find(shared_options.begin(), shared_options.end(), option) != shared_options.end())
             continue;
         std::string value;
@@ -119,9 +154,9 @@ std::vector<std::pair<std::string, std::string>> command_line::chapter_options()
 
 std::optional<int> command_line::parse(int argc, char** argv) {
     try {
-        cli.parse(argc, argv);
+        cli->parse(argc, argv);
     } catch (const CLI::CallForHelp&) {
-        std::printf("%s", cli.help().c_str());
+        std::printf("%s", cli->help().c_str());
         return 0;
     } catch (const CLI::ParseError& e) {
         std::fprintf(stderr, "%s: error: %s\n", program.c_str(), e.what());

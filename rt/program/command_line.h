@@ -2,31 +2,60 @@
 //   chNN_name [--width N] [--spp N] [--max-depth N] [--seed N] [--threads N] [--out FILE]...
 //             [--variance-out FILE] [--stats-out FILE] [--crop X0,Y0,X1,Y1]
 //             [--samples FROM:TO] [--quiet] [--help]
-// A chapter's main() names its program, adds its own flags through app() and hands run() the
-// function that builds its render job. The scene brings its own default settings
-// (render_job::settings); a flag the user gives overrides that one setting.
+// A chapter's main() names its program, adds its own flags (add_choice and the others below)
+// and hands run() the function that builds its render job. The scene brings its own default
+// settings (render_job::settings); a flag the user gives overrides that one setting.
+// CLI11 parses; it stays inside command_line.cpp, so that a chapter's program, which includes
+// this header, does not compile the 10,000 lines of its header again.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <chrono>
+#include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "rt/program/flag_checks.h"
 #include "rt/program/run_stats.h"
 #include "rt/render/render.h"
+
+namespace CLI {
+class App;
+class Option;
+}  // namespace CLI
 
 namespace rt {
 
 class command_line {
   public:
     explicit command_line(std::string program_name);
+    ~command_line();
+    command_line(const command_line&)            = delete;
+    command_line& operator=(const command_line&) = delete;
 
-    CLI::App& app() { return cli; }
     const std::string& name() const { return program; }
+
+    // A chapter's own flags, shown by --help and kept with their values in the record of a run.
+    // show_default: --help shows the value the variable starts with.
+    // One of the words `allowed`, into value ("--scene: moon not in {floor,book}" otherwise).
+    void add_choice(const std::string& flag, std::string& value,
+                    const std::vector<std::string>& allowed, const std::string& help,
+                    bool show_default = true);
+    // Any text, such as a file name, into value.
+    void add_text(const std::string& flag, std::string& value, const std::string& help,
+                  bool show_default = true);
+    // A finite number >= lo (lo_allowed) or > lo, into value; value stays empty when the flag
+    // is not given (the scene's own number then).
+    void add_number(const std::string& flag, std::optional<real>& value, const std::string& help,
+                    double lo, bool lo_allowed);
+    // One of the words `allowed`, handed to act when the flag is given.
+    void add_choice_action(const std::string& flag, const std::vector<std::string>& allowed,
+                           const std::string& help, std::function<void(const std::string&)> act);
+    // An unsigned 32-bit integer, handed to act when the flag is given.
+    void add_uint32_action(const std::string& flag, const std::string& help,
+                           std::function<void(std::uint32_t)> act);
 
     // The whole run: parse(), then build the job (so chapter flags can choose the scene), put
     // the flags given over its settings, render with a progress line, write every output all
@@ -72,7 +101,7 @@ class command_line {
     std::string crop_text;             // --crop as given, checked by the parser
     std::string samples_text;          // --samples as given, checked by the parser
     std::vector<std::string> command;  // the arguments as given, for the record
-    CLI::App cli;
+    std::unique_ptr<CLI::App> cli;
     std::vector<const CLI::Option*> shared_options;  // the flags every chapter has
 };
 
