@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "rt/core/exercise.h"
 #include "rt/core/interval.h"
 #include "rt/core/ray.h"
 
@@ -79,6 +80,7 @@ class aabb {
     // 1e-4 because its test also rejects max = min.) A ray parallel to the plane is inside the
     // slab only if it lies in the plane: 0 * inf = NaN there, +-inf just off it.
     bool hit(const point3& origin, const vec3& inv_dir, interval ray_t) const {
+        // [exercise aabb::hit begin]
         for (int axis = 0; axis < 3; ++axis) {
             const interval& ax = axis_interval(axis);
             real t0            = (ax.min - origin[axis]) * inv_dir[axis];
@@ -90,6 +92,7 @@ class aabb {
             if (ray_t.max < ray_t.min) return false;
         }
         return true;
+        // [exercise aabb::hit end]
     }
 
   private:

@@ -6,6 +6,8 @@
 #include <string>
 #include <utility>
 
+#include "rt/core/exercise.h"
+
 namespace rt {
 
 namespace {
@@ -88,6 +90,7 @@ std::uint32_t bvh::build(std::vector<build_item>& items, std::size_t begin, std:
         ++bin_objects[b];
     }
 
+    // [exercise bvh::build begin]
     // Sweep from the right to know each suffix's box, then from the left to price each split.
     std::array<real, bin_count> right_area{};
     std::array<std::size_t, bin_count> right_count{};
@@ -147,9 +150,11 @@ std::uint32_t bvh::build(std::vector<build_item>& items, std::size_t begin, std:
                          return a.centroid[axis] < b.centroid[axis];
                      });
     return make_interior(mid, axis);
+    // [exercise bvh::build end]
 }
 
 bool bvh::hit(const ray& r, interval ray_t, hit_record& rec) const {
+    // [exercise bvh::hit begin]
     if (tree.empty()) return false;
     const vec3& d = r.direction();
     const vec3 inv_dir(1 / d.x(), 1 / d.y(), 1 / d.z());
@@ -180,6 +185,7 @@ bool bvh::hit(const ray& r, interval ray_t, hit_record& rec) const {
         if (waiting == 0) return hit_anything;
         current = farther[--waiting];
     }
+    // [exercise bvh::hit end]
 }
 
 // [ch14 begin]

@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "rt/core/exercise.h"
 #include "rt/core/validate.h"
 #include "rt/samplers/sampling.h"
 
@@ -20,6 +21,7 @@ void thin_lens_camera::initialize(const film& f) {
     }
     // [ch07 end]
 
+    // [exercise thin_lens_camera::initialize begin]
     vec3 view = lookfrom - lookat;
     require(view.length() > 0, "camera lookfrom", "differ from lookat", lookfrom);
     vec3 w    = unit_vector(view);
@@ -33,14 +35,17 @@ void thin_lens_camera::initialize(const film& f) {
     real lens_radius = aperture / 2;
     lens_u           = lens_radius * u;
     lens_v           = lens_radius * v;
+    // [exercise thin_lens_camera::initialize end]
 }
 
 ray thin_lens_camera::get_ray(int i, int j, sampler& s) const {
     point3 target = pixel_sample(i, j, s);
     point3 origin = center;
     if (aperture > 0) {
+        // [exercise thin_lens_camera::get_ray begin]
         vec3 disk = sample_uniform_disk(s.next_2d());
         origin    = center + disk.x() * lens_u + disk.y() * lens_v;
+        // [exercise thin_lens_camera::get_ray end]
     }
     // [ch07 begin]
     if (shutter_close > shutter_open) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "rt/core/exercise.h"
 #include "rt/core/validate.h"
 #include "rt/geometry/quad.h"
 
@@ -17,6 +18,7 @@ std::vector<bounded_object> box_faces(const point3& a, const point3& b,
         corners << a << " and " << b;
         require(false, "box corners", "differ in every coordinate (not a flat box)", corners.str());
     }
+    // [exercise box_faces begin]
     vec3 dx(hi.x() - lo.x(), 0, 0), dy(0, hi.y() - lo.y(), 0), dz(0, 0, hi.z() - lo.z());
 
     std::vector<bounded_object> sides;
@@ -34,6 +36,7 @@ std::vector<bounded_object> box_faces(const point3& a, const point3& b,
     sides.push_back(
         std::make_shared<quad>(point3(lo.x(), lo.y(), lo.z()), dx, dz, mat));  // bottom -y
     return sides;
+    // [exercise box_faces end]
 }
 
 std::shared_ptr<bvh> box(const point3& a, const point3& b, const std::shared_ptr<material>& mat) {

@@ -85,11 +85,13 @@ class hittable {
     // this default asks; a shape that solves for both at once (a sphere) answers for half of
     // the work. False, and `inside` unchanged, when there are not two such hits.
     virtual bool crossing(const ray& r, interval& inside) const {
+        // [exercise hittable::crossing begin]
         hit_record entry, exit;
         if (!hit(r, interval::universe(), entry)) return false;
         if (!hit(r, interval(entry.t, infinity), exit)) return false;
         inside = interval(entry.t, exit.t);
         return true;
+        // [exercise hittable::crossing end]
     }
     // [ch12 end]
 

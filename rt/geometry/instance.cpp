@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "rt/core/exercise.h"
 #include "rt/core/validate.h"
 
 namespace rt {
@@ -22,11 +23,13 @@ translate::translate(const bounded_object& obj, const vec3& displacement)
 }
 
 bool translate::hit(const ray& r, interval ray_t, hit_record& rec) const {
+    // [exercise translate::hit begin]
     if (!object->hit(r.continued(r.origin() - offset, r.direction()), ray_t, rec)) return false;
     rec.p += offset;
     // Adding the offset rounds p once more, by up to half an ulp of its new size.
     rec.p_error += spawn_offset_scale * max_abs_component(rec.p);
     return true;
+    // [exercise translate::hit end]
 }
 
 rotate::rotate(const bounded_object& obj, axis turn_about, real degrees)
@@ -47,6 +50,7 @@ rotate::rotate(const bounded_object& obj, axis turn_about, real degrees)
     // too: hit() asks the object itself, not its box, and an object may answer a ray up to an
     // ulp or so outside its box (a quad rounds its (alpha, beta) before comparing them with 0
     // and 1). Relative to M, so the box stays tight at every scale and far from the origin.
+    // [exercise rotate::rotate begin]
     const aabb& ob = obj.box;
     if (ob.empty()) return;  // nothing to bound (turning +-inf corners would make NaN)
     real largest = 0;
@@ -58,12 +62,14 @@ rotate::rotate(const bounded_object& obj, axis turn_about, real degrees)
         largest       = std::fmax(largest, max_abs_component(corner));
     }
     box = box.widened(4 * std::numeric_limits<real>::epsilon() * largest);
+    // [exercise rotate::rotate end]
 }
 
 vec3 rotate::turn(const vec3& v, real sin_angle) const {
     // The two coordinates (p, q) that turn go to (cos p - sin q, sin p + cos q), like x -> y
     // about z. Written out per axis rather than indexed by the axis at run time, which would
     // keep v in memory instead of registers (a Cornell box renders 3.6 % faster so).
+    // [exercise rotate::turn begin]
     auto turned_p = [&](real p, real q) { return cos_theta * p - sin_angle * q; };
     auto turned_q = [&](real p, real q) { return sin_angle * p + cos_theta * q; };
     switch (about) {
@@ -75,9 +81,11 @@ vec3 rotate::turn(const vec3& v, real sin_angle) const {
             break;
     }
     return vec3(turned_q(v.z(), v.x()), v.y(), turned_p(v.z(), v.x()));
+    // [exercise rotate::turn end]
 }
 
 bool rotate::hit(const ray& r, interval ray_t, hit_record& rec) const {
+    // [exercise rotate::hit begin]
     if (!object->hit(r.continued(to_object(r.origin()), to_object(r.direction())), ray_t, rec))
         return false;
     rec.p      = to_world(rec.p);
@@ -85,6 +93,7 @@ bool rotate::hit(const ray& r, interval ray_t, hit_record& rec) const {
     // Turning p rounds it again: a few ulps of its size (two products and a sum per coordinate).
     rec.p_error += spawn_offset_scale * max_abs_component(rec.p);
     return true;
+    // [exercise rotate::hit end]
 }
 
 }  // namespace rt

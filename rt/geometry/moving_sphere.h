@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "rt/accel/bounded.h"
+#include "rt/core/exercise.h"
 #include "rt/geometry/sphere.h"
 
 namespace rt {
@@ -25,9 +26,11 @@ struct center_path {
     // stays inside the box of C0 and C1 for t in [0, 1]. One formula with selected inputs, so
     // there is nothing to branch on: ray times are random.
     point3 at(real time) const {
+        // [exercise center_path::at begin]
         const bool late    = time >= real(0.5);
         const point3& from = late ? center1 : center0;
         return from + (late ? time - 1 : time) * velocity;
+        // [exercise center_path::at end]
     }
 };
 

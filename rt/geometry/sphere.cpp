@@ -106,9 +106,11 @@ bool sphere::crossing(const ray& r, interval& inside) const {
 
 // [ch08 begin]
 surface_uv sphere::uv_from_normal(const vec3& n) {
+    // [exercise sphere::uv_from_normal begin]
     real theta = std::acos(std::clamp(-n.y(), real(-1), real(1)));
     real phi   = std::atan2(-n.z(), n.x()) + pi;
     return {phi / (2 * pi), theta / pi};
+    // [exercise sphere::uv_from_normal end]
 }
 // [ch08 end]
 

@@ -24,8 +24,10 @@ color path_tracer::radiance(const ray& camera_ray, sampler& s, int max_depth) co
             radiance += throughput * sky.radiance(r.direction());
             break;
         }
+        // [exercise path_tracer::emission begin] [ch10]
         radiance += throughput * rec.mat->emitted(r, rec);  // [ch10]
-        s.start_segment(segment);                           // [ch16] the layout of sampler.h
+        // [exercise path_tracer::emission end] [ch10]
+        s.start_segment(segment);  // [ch16] the layout of sampler.h
         // [exercise path_tracer::radiance begin]
         const std::optional<scatter_sample> next = rec.mat->scatter(r, rec, s);
         if (!next) break;  // absorbed

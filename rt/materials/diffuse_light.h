@@ -6,6 +6,7 @@
 
 #include <memory>
 
+#include "rt/core/exercise.h"
 #include "rt/materials/material.h"
 #include "rt/textures/texture.h"
 
@@ -18,7 +19,9 @@ class diffuse_light : public material {
     explicit diffuse_light(std::shared_ptr<texture> radiance);
 
     color emitted(const ray&, const hit_record& rec) const override {
+        // [exercise diffuse_light::emitted begin]
         return radiance->value_at(rec);
+        // [exercise diffuse_light::emitted end]
     }
 
     // Absorbs every ray: a light does not reflect.

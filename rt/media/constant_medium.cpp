@@ -4,6 +4,7 @@
 #include <limits>
 #include <sstream>
 
+#include "rt/core/exercise.h"
 #include "rt/core/rng.h"
 #include "rt/core/validate.h"
 #include "rt/media/isotropic.h"
@@ -26,6 +27,7 @@ constant_medium::constant_medium(const bounded_object& b, real density,
 }
 
 bool constant_medium::inside_stretch(const ray& r, interval ray_t, real& t_in, real& t_out) const {
+    // [exercise constant_medium::inside_stretch begin]
     interval inside;
     if (!boundary->crossing(r, inside)) return false;
 
@@ -33,9 +35,11 @@ bool constant_medium::inside_stretch(const ray& r, interval ray_t, real& t_in, r
     t_in  = std::fmax(inside.min, std::fmax(ray_t.min, real(0)));
     t_out = std::fmin(inside.max, ray_t.max);
     return t_in < t_out;
+    // [exercise constant_medium::inside_stretch end]
 }
 
 bool constant_medium::hit(const ray& r, interval ray_t, hit_record& rec) const {
+    // [exercise constant_medium::hit begin]
     real t_in = 0, t_out = 0;
     if (!inside_stretch(r, ray_t, t_in, t_out)) return false;
 
@@ -53,6 +57,7 @@ bool constant_medium::hit(const ray& r, interval ray_t, hit_record& rec) const {
     rec.object     = this;    // no surface: (u, v) = (0, 0)
     rec.local      = vec3();  // nor coordinates on one; a candidate's would otherwise remain
     return true;
+    // [exercise constant_medium::hit end]
 }
 
 // [ch14 begin]
@@ -64,6 +69,7 @@ real constant_medium::transmittance(const ray& r, interval ray_t) const {
 // [ch14 end]
 
 real constant_medium::random_for(const ray& r) const {
+    // [exercise constant_medium::random_for begin]
     const point3& o = r.origin();
     const vec3& d   = r.direction();
     std::uint64_t h = hash_values(hash_values(bits_of(o.x()), bits_of(o.y()), bits_of(o.z())),
@@ -72,6 +78,7 @@ real constant_medium::random_for(const ray& r) const {
     // The top 53 (or 24) bits, plus one: in (0, 1], never 0, so the log stays finite.
     return (real(h >> (64 - std::numeric_limits<real>::digits)) + 1) *
            std::ldexp(real(1), -std::numeric_limits<real>::digits);
+    // [exercise constant_medium::random_for end]
 }
 
 }  // namespace rt

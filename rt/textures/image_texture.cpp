@@ -12,6 +12,7 @@
 #include <system_error>
 
 #include "rt/core/error.h"
+#include "rt/core/exercise.h"
 #include "rt/files/jpeg_guard.h"
 #include "rt/files/png_guard.h"
 #include "rt/files/pnm_guard.h"
@@ -197,6 +198,7 @@ image_texture::image_texture(const std::string& path, std::int64_t texel_limit, 
 
 color image_texture::value(real u, real v, const point3&) const {
     // Clamp to [0, 1]; the negated comparisons also send NaN to 0.
+    // [exercise image_texture::value begin]
     u                      = !(u > 0) ? 0 : std::min(u, real(1));
     v                      = !(v > 0) ? 0 : std::min(v, real(1));
     int col                = std::min(int(u * real(w)), w - 1);
@@ -204,6 +206,7 @@ color image_texture::value(real u, real v, const point3&) const {
     const unsigned char* t = texels.get() + 3 * (std::size_t(row) * std::size_t(w) + col);
     const auto& linear = decoding == texel_decoding::srgb ? srgb8_to_linear() : bytes_over_255();
     return color(linear[t[0]], linear[t[1]], linear[t[2]]);
+    // [exercise image_texture::value end]
 }
 
 }  // namespace rt

@@ -8,6 +8,7 @@
 
 #include <cmath>
 
+#include "rt/core/exercise.h"
 #include "rt/textures/perlin.h"
 #include "rt/textures/texture.h"
 
@@ -23,9 +24,11 @@ class noise_texture : public texture {
     noise_texture(real stripe_scale, book_random& draws) : noise(draws), scale(stripe_scale) {}
 
     color value(real, real, const point3& p) const override {
+        // [exercise noise_texture::value begin]
         const point3 s = scale * p;
         real gray      = real(0.5) * (1 + std::sin(s.z() + 10 * noise.turbulence(s, 7)));
         return color(gray, gray, gray);
+        // [exercise noise_texture::value end]
     }
     bool uses_uv() const override { return false; }
 

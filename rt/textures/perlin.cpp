@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "rt/core/exercise.h"
+
 namespace rt {
 
 namespace {
@@ -30,6 +32,7 @@ perlin::perlin(std::uint32_t seed) {
 }
 
 real perlin::noise(const point3& p) const {
+    // [exercise perlin::noise begin]
     const real fx = std::floor(p.x()), fy = std::floor(p.y()), fz = std::floor(p.z());
     const real u = p.x() - fx, v = p.y() - fy, w = p.z() - fz;
     // Lattice indices wrap every 256 cells; long long keeps huge coordinates from overflowing.
@@ -51,9 +54,11 @@ real perlin::noise(const point3& p) const {
         }
     }
     return sum;
+    // [exercise perlin::noise end]
 }
 
 real perlin::turbulence(point3 p, int depth) const {
+    // [exercise perlin::turbulence begin]
     real sum = 0, weight = 1;
     for (int i = 0; i < depth; ++i) {
         sum += weight * noise(p);
@@ -61,6 +66,7 @@ real perlin::turbulence(point3 p, int depth) const {
         p = 2 * p;
     }
     return std::fabs(sum);
+    // [exercise perlin::turbulence end]
 }
 
 }  // namespace rt

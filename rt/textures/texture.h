@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 
+#include "rt/core/exercise.h"
 #include "rt/core/vec3.h"
 #include "rt/geometry/hittable.h"
 
@@ -56,9 +57,11 @@ class checker_texture : public texture {
     color value(real u, real v, const point3& p) const override {
         // Divide, not multiply by 1 / scale: 1 / 3 is rounded, and x * (1 / 3) can round the
         // largest float below a boundary 3k up to k, into the wrong cell.
+        // [exercise checker_texture::value begin]
         auto cell   = [this](real x) { return static_cast<long long>(std::floor(x / cell_size)); };
         long long n = cell(p.x()) + cell(p.y()) + cell(p.z());
         return (n % 2 == 0 ? even : odd)->value(u, v, p);
+        // [exercise checker_texture::value end]
     }
     bool uses_uv() const override { return even->uses_uv() || odd->uses_uv(); }
 
