@@ -5,6 +5,8 @@
 #include <bit>
 #include <limits>
 
+#include "rt/core/exercise.h"
+
 namespace rt {
 
 wide_bvh::wide_bvh(const bvh& tree, const object_map& map,
@@ -71,6 +73,7 @@ std::uint32_t wide_bvh::pack(const bvh& tree, std::uint32_t index) {
         std::vector<step> path;  // from this node down, one step per binary level
     };
     std::vector<lane> lanes = {{index + 1, {{0, b.axis}}}, {b.offset, {{1, b.axis}}}};
+    // [exercise wide_bvh::pack begin]
     while (lanes.size() < 4) {
         int widest       = -1;
         real widest_area = 0;
@@ -93,6 +96,7 @@ std::uint32_t wide_bvh::pack(const bvh& tree, std::uint32_t index) {
         lanes[std::size_t(widest)] = first;
         lanes.insert(lanes.begin() + widest + 1, second);
     }
+    // [exercise wide_bvh::pack end]
 
     wide_node_area += b.box.half_area();
     const auto here = std::uint32_t(nodes.size());
@@ -117,6 +121,7 @@ std::uint32_t wide_bvh::pack(const bvh& tree, std::uint32_t index) {
     // towards smaller coordinates on that level's split axis. So a lane's rank is its path with
     // each side flipped so, read as a word; no path begins another's (the lanes are disjoint
     // subtrees), so comparing words orders them. Unused lanes go last.
+    // [exercise wide_bvh::visit_order begin]
     for (int octant = 0; octant < 8; ++octant) {
         auto rank = [&](std::size_t k) {
             std::vector<int> word;
@@ -131,6 +136,7 @@ std::uint32_t wide_bvh::pack(const bvh& tree, std::uint32_t index) {
         n.order[octant] =
             std::uint8_t(lane_of[0] | lane_of[1] << 2 | lane_of[2] << 4 | lane_of[3] << 6);
     }
+    // [exercise wide_bvh::visit_order end]
     return here;
 }
 
@@ -192,6 +198,7 @@ template <typename mask4>
 template <typename real4>
 [[gnu::always_inline]] inline unsigned hit_four(const real4 bounds[6], const slab_ray<real4>& r,
                                                 const interval& ray_t, real t_enter[4]) {
+    // [exercise hit_four begin]
     constexpr real widen = 1 + 4 * std::numeric_limits<real>::epsilon();  // aabb's robust_factor
     real4 t_min          = {ray_t.min, ray_t.min, ray_t.min, ray_t.min};
     real4 t_far          = {infinity, infinity, infinity, infinity};
@@ -209,6 +216,7 @@ template <typename real4>
     const auto inside = t_min <= t_far;  // each lane: all bits set (-1) or none
     for (int k = 0; k < 4; ++k) t_enter[k] = t_min[k];
     return lane_bits(inside);
+    // [exercise hit_four end]
 }
 
 }  // namespace
@@ -252,6 +260,7 @@ RT_ALSO_FOR_AVX2 bool wide_bvh::closest_hit(const ray& r, interval ray_t, hit_re
     // it misses them too (their slab distances are rounded the same way), and a root that is a
     // leaf is just its objects, which answer for themselves.
     if (root & leaf_bit) return !runs.empty() && hit_leaf(root & ~leaf_bit, r, ray_t, rec);
+    // [exercise wide_bvh::closest_hit begin]
     const slab_ray<real4> sr(r);
 
     // Children still to visit, with where the ray enters them: when one comes up, a hit found
@@ -294,6 +303,7 @@ RT_ALSO_FOR_AVX2 bool wide_bvh::closest_hit(const ray& r, interval ray_t, hit_re
         } while (stack[top].t_enter > ray_t.max);
         current = stack[top].child;
     }
+    // [exercise wide_bvh::closest_hit end]
 }
 
 bool wide_bvh::hit(const ray& r, interval ray_t, hit_record& rec) const {

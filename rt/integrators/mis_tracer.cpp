@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "rt/core/exercise.h"
 #include "rt/core/validate.h"
 #include "rt/geometry/spawn_ray.h"
 #include "rt/materials/material.h"
@@ -20,11 +21,13 @@ constexpr int roulette_after = 3;
 }  // namespace
 
 real power_heuristic(real pdf_taken, real pdf_other) {
+    // [exercise power_heuristic begin]
     if (!(pdf_taken > 0)) return 0;
     if (std::isinf(pdf_taken)) return std::isinf(pdf_other) ? real(0.5) : 1;
     // 1 / (1 + (other / taken)^2): no overflow when both densities are huge.
     real ratio = pdf_other / pdf_taken;
     return 1 / (1 + ratio * ratio);
+    // [exercise power_heuristic end]
 }
 
 mis_tracer::mis_tracer(std::shared_ptr<const hittable> w, const background& b)
@@ -65,17 +68,20 @@ color mis_tracer::radiance(const ray& camera_ray, sampler& s, int max_depth) con
         const material& surface = *rec.mat;
         color emitted           = surface.emitted(r, rec);
         if (!is_black(emitted)) {
+            // [exercise mis_tracer::hit_weight begin]
             real w = 1;
             if (weigh_emission)
                 w = power_heuristic(
                     material_pdf, lights.pdf_of_hit(last_vertex, unit_vector(r.direction()), rec));
             radiance += throughput * w * emitted;
+            // [exercise mis_tracer::hit_weight end]
         }
 
         s.start_segment(segment);  // [ch16]
         const bool evaluable = surface.lobe_kind() == lobe::evaluable && !lights.empty();
         // Next-event estimation: only where the light it finds is still within max_depth.
         if (evaluable && segment + 1 < max_depth) {
+            // [exercise mis_tracer::next_event begin]
             real pick = s.next_1d();
             light_sample towards;
             if (lights.sample(rec.p, pick, s.next_2d(), towards)) {
@@ -89,6 +95,7 @@ color mis_tracer::radiance(const ray& camera_ray, sampler& s, int max_depth) con
                     }
                 }
             }
+            // [exercise mis_tracer::next_event end]
         }
 
         const std::optional<scatter_sample> next = surface.scatter(r, rec, s);
@@ -104,12 +111,14 @@ color mis_tracer::radiance(const ray& camera_ray, sampler& s, int max_depth) con
         r           = next->scattered;
 
         if (segment + 1 >= roulette_after) {
+            // [exercise mis_tracer::roulette begin]
             real carried = max_abs_component(throughput);
             if (carried < 1) {
                 real q = 1 - carried;
                 if (s.next_1d() < q) break;
                 throughput = throughput / (1 - q);
             }
+            // [exercise mis_tracer::roulette end]
         }
     }
     return radiance;

@@ -1,5 +1,6 @@
 #include "rt/integrators/mixture_tracer.h"
 
+#include "rt/core/exercise.h"
 #include "rt/core/validate.h"
 #include "rt/geometry/spawn_ray.h"
 #include "rt/materials/material.h"
@@ -40,6 +41,7 @@ color mixture_tracer::radiance(const ray& camera_ray, sampler& s, int max_depth)
             continue;
         }
 
+        // [exercise mixture_tracer::radiance begin]
         vec3 wi;
         real material_pdf = 0;  // the material's density of wi
         if (s.next_1d() < real(0.5)) {
@@ -60,6 +62,7 @@ color mixture_tracer::radiance(const ray& camera_ray, sampler& s, int max_depth)
         if (!(pdf > 0) || is_black(f)) break;  // below the surface: no light comes that way
         throughput = throughput * f / pdf;
         r          = spawn_ray(rec, r, wi);
+        // [exercise mixture_tracer::radiance end]
     }
     return radiance;
 }

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "rt/core/exercise.h"
 #include "rt/materials/material.h"
 
 namespace rt {
@@ -32,12 +33,14 @@ real quad_light::pdf(const point3& ref, const vec3& wi) const {
 }
 
 real quad_light::pdf_at(const point3& ref, const vec3& wi, const hit_record& hit) const {
+    // [exercise quad_light::pdf_at begin]
     real distance_squared = (hit.p - ref).length_squared();
     real cos_light        = std::fabs(dot(hit.normal, wi));
     // Seen so nearly edge-on that the density overflows: sample() never returns such a
     // direction (it refuses infinite densities), so its density is 0.
     real density = distance_squared / (cos_light * area);
     return cos_light > 0 && std::isfinite(density) ? density : 0;
+    // [exercise quad_light::pdf_at end]
 }
 
 }  // namespace rt

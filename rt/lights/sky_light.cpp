@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "rt/core/exercise.h"
+
 namespace rt {
 
 namespace {
@@ -21,6 +23,7 @@ bool sky_light::emits(const background& s) {
 }
 
 real sky_light::height_for(real u) const {
+    // [exercise sky_light::height_for begin]
     // The cdf F(y) = (a (y + 1) + b (y^2 - 1) / 2) / (2 a) = u is the quadratic
     // (b/2) y^2 + a y + c = 0 with c = a - b/2 - 2 a u. Its root in [-1, 1], written as
     // -2c / (a + sqrt(a^2 - 2 b c)) so that it does not cancel as b goes to 0 (a >= |b|, since
@@ -29,6 +32,7 @@ real sky_light::height_for(real u) const {
     real discriminant = std::fmax(real(0), a * a - 2 * b * c);
     real y            = -2 * c / (a + std::sqrt(discriminant));
     return std::clamp(y, real(-1), real(1));
+    // [exercise sky_light::height_for end]
 }
 
 bool sky_light::sample(const point3& /*ref*/, sample2 u, light_sample& out) const {

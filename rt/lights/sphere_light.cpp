@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "rt/core/exercise.h"
 #include "rt/core/onb.h"
 #include "rt/materials/material.h"
 #include "rt/samplers/sampling.h"
@@ -23,6 +24,7 @@ bool sphere_light::sample(const point3& ref, sample2 u, light_sample& out) const
     real s = sin2_max(ref);
     vec3 direction;
     if (s < 1) {
+        // [exercise sphere_light::sample begin]
         // Uniform in the cone about the center: cos theta = 1 - u (1 - cos theta_max), and
         // sin^2 = (1 - cos)(1 + cos) computed from 1 - cos itself, so a tiny cone keeps its size.
         real one_minus_cos = u.u * one_minus_cos_max(s);
@@ -32,6 +34,7 @@ bool sphere_light::sample(const point3& ref, sample2 u, light_sample& out) const
         vec3 axis          = unit_vector(shape->center() - ref);
         direction          = onb(axis).to_world(
                      vec3(sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta));
+        // [exercise sphere_light::sample end]
     } else {
         // Inside: aim at a uniform point of the surface.
         direction = shape->center() + shape->radius() * sample_uniform_sphere(u) - ref;
@@ -54,6 +57,7 @@ real sphere_light::pdf(const point3& ref, const vec3& wi) const {
 }
 
 real sphere_light::pdf_at(const point3& ref, const vec3& wi, const hit_record& hit) const {
+    // [exercise sphere_light::pdf_at begin]
     real s = sin2_max(ref);
     if (s < 1) {
         // A sphere so small or far that its cone underflows is never sampled (sample() refuses
@@ -66,6 +70,7 @@ real sphere_light::pdf_at(const point3& ref, const vec3& wi, const hit_record& h
     real cos_light = std::fabs(dot(hit.normal, wi));
     real density   = (hit.p - ref).length_squared() / (cos_light * 4 * pi * r * r);
     return cos_light > 0 && std::isfinite(density) ? density : 0;  // as quad_light::pdf_at
+    // [exercise sphere_light::pdf_at end]
 }
 
 }  // namespace rt

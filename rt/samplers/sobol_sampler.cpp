@@ -2,6 +2,7 @@
 
 #include <limits>
 
+#include "rt/core/exercise.h"
 #include "rt/core/rng.h"
 
 namespace rt {
@@ -43,8 +44,10 @@ struct dimension_1_tables {
     }
 
     std::uint32_t operator()(std::uint32_t i) const {
+        // [exercise dimension_1_tables::operator begin]
         return by_byte[0][i & 0xffu] ^ by_byte[1][(i >> 8u) & 0xffu] ^
                by_byte[2][(i >> 16u) & 0xffu] ^ by_byte[3][i >> 24u];
+        // [exercise dimension_1_tables::operator end]
     }
 };
 constexpr dimension_1_tables dimension_1{false}, dimension_1_reversed{true};
@@ -114,18 +117,22 @@ std::uint32_t sobol_sampler::shuffled_index(std::uint32_t key) const {
 }
 
 real sobol_sampler::next_1d() {
+    // [exercise sobol_sampler::next_1d begin]
     std::uint64_t key      = draw_key();
     std::uint32_t shuffled = shuffled_index(std::uint32_t(key));
     return to_unit(owen_scramble_of_reversed(shuffled, std::uint32_t(key >> 32u)));
+    // [exercise sobol_sampler::next_1d end]
 }
 
 sample2 sobol_sampler::next_2d() {
+    // [exercise sobol_sampler::next_2d begin]
     std::uint64_t key      = draw_key();
     std::uint64_t key2     = mix_bits(key);
     std::uint32_t shuffled = shuffled_index(std::uint32_t(key));
     return {
         to_unit(owen_scramble_of_reversed(shuffled, std::uint32_t(key >> 32u))),
         to_unit(owen_scramble_of_reversed(dimension_1_reversed(shuffled), std::uint32_t(key2)))};
+    // [exercise sobol_sampler::next_2d end]
 }
 
 }  // namespace rt
