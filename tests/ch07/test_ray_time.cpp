@@ -33,7 +33,7 @@ TEST_CASE("ray: a scattered ray keeps the instant of the ray that arrived", "[ra
 }
 
 TEST_CASE("thin_lens_camera: with the shutter closed, rays are at instant 0 and draw no time",
-          "[camera][ch07]") {
+          "[camera][ch07][draw-order]") {
     rt::thin_lens_camera cam;
     cam.initialize(rt::film::for_aspect(64, 16.0 / 9));
     rt::independent_sampler s(3), fresh(3);
