@@ -89,6 +89,15 @@ def shorten(text, limit=200):
     return text if len(text) <= limit else text[:limit - 3] + "..."
 
 
+def default_signals():
+    """In a target's process, before it starts: the interrupt signals back to their default
+    action, as CTest gives them. A run started in the background (`&`, nohup) ignores SIGINT or
+    SIGHUP, the target would inherit that, and the tests of what an interrupt does would see a
+    program that ignores it."""
+    for number in (signal.SIGINT, signal.SIGHUP, signal.SIGTERM, signal.SIGQUIT):
+        signal.signal(number, signal.SIG_DFL)
+
+
 def run_test(test, timeout, env):
     """(passed, seconds, message, output). A golden image is judged by the noise statistic alone
     (RT_GOLDEN_NOISE_ONLY): the judgement a correct render of other code passes."""
@@ -100,7 +109,8 @@ def run_test(test, timeout, env):
         test_env[key] = value
     start = time.monotonic()
     process = subprocess.Popen(command, cwd=cwd, env=test_env, stdout=subprocess.PIPE,
-                               stderr=subprocess.STDOUT, start_new_session=True)
+                               stderr=subprocess.STDOUT, start_new_session=True,
+                               preexec_fn=default_signals)
     try:
         output, _ = process.communicate(timeout=timeout)
     except subprocess.TimeoutExpired:
