@@ -113,14 +113,13 @@ void command_line::add_number(const std::string& flag, std::optional<real>& valu
 void command_line::add_choice_action(const std::string& flag,
                                      const std::vector<std::string>& allowed,
                                      const std::string& help,
-                                     std::function<void(const std::string&)> act) {
-    cli->add_option_function<std::string>(flag, std::move(act), help)
-        ->check(CLI::IsMember(allowed));
+                                     const std::function<void(const std::string&)>& act) {
+    cli->add_option_function<std::string>(flag, act, help)->check(CLI::IsMember(allowed));
 }
 
 void command_line::add_uint32_action(const std::string& flag, const std::string& help,
-                                     std::function<void(std::uint32_t)> act) {
-    cli->add_option_function<std::uint32_t>(flag, std::move(act), help);
+                                     const std::function<void(std::uint32_t)>& act) {
+    cli->add_option_function<std::uint32_t>(flag, act, help);
 }
 
 render_settings command_line::with_flags(render_settings s) const {

@@ -52,10 +52,11 @@ class command_line {
                     double lo, bool lo_allowed);
     // One of the words `allowed`, handed to act when the flag is given.
     void add_choice_action(const std::string& flag, const std::vector<std::string>& allowed,
-                           const std::string& help, std::function<void(const std::string&)> act);
+                           const std::string& help,
+                           const std::function<void(const std::string&)>& act);
     // An unsigned 32-bit integer, handed to act when the flag is given.
     void add_uint32_action(const std::string& flag, const std::string& help,
-                           std::function<void(std::uint32_t)> act);
+                           const std::function<void(std::uint32_t)>& act);
 
     // The whole run: parse(), then build the job (so chapter flags can choose the scene), put
     // the flags given over its settings, render with a progress line, write every output all
