@@ -57,6 +57,7 @@ rm -f existing.png
 if ! "$exe" --quiet --width 8 --spp 1 --out a.png --out b.pfm 2>stderr.txt || [ -s stderr.txt ] ||
     [ "$(ls -A | grep -v stderr.txt | tr '\n' ' ')" != "a.png b.pfm " ]; then
     echo "FAIL: a good render did not write exactly a.png and b.pfm quietly: $(ls -A)"
+    head -n 3 stderr.txt  # what the render said instead
     failures=$((failures + 1))
 fi
 echo "$failures failures"
