@@ -190,10 +190,6 @@ TEST_CASE("diffuse_light: a textured light emits its texture's value at the hit'
     // (a, b), from the front and from behind. Dyadic points: all exact.
     auto light = std::make_shared<rt::diffuse_light>(std::make_shared<uv_texture>());
     const rt::quad quad(point3(-1, -1, 0), vec3(2, 0, 0), vec3(0, 2, 0), light);
-    auto world = std::make_shared<rt::hittable_list>();
-    world->add(std::make_shared<rt::quad>(quad));
-    const rt::path_tracer tracer(world, rt::background::uniform(color(0, 0, 0)));
-    rt::independent_sampler s(4);
     for (const auto& [a, b] : {std::pair<real, real>(0.25, 0.75), {0.5, 0.125}, {0.875, 0.5}}) {
         for (real z : {real(3), real(-3)}) {
             CAPTURE(a, b, z);
@@ -201,7 +197,24 @@ TEST_CASE("diffuse_light: a textured light emits its texture's value at the hit'
             rt::hit_record rec;
             REQUIRE(quad.hit(r, forward, rec));
             CHECK(exactly(light->emitted(r, rec), color(a, b, 0)));
+        }
+    }
+}
+
+TEST_CASE("diffuse_light: the path tracer shows a textured light's value at each point seen",
+          "[ch10]") {
+    // The same light and points as above, now through the integrator: the emission it adds
+    // is the texture's value at the hit, from the front and from behind.
+    auto light = std::make_shared<rt::diffuse_light>(std::make_shared<uv_texture>());
+    auto world = std::make_shared<rt::hittable_list>();
+    world->add(std::make_shared<rt::quad>(point3(-1, -1, 0), vec3(2, 0, 0), vec3(0, 2, 0), light));
+    const rt::path_tracer tracer(world, rt::background::uniform(color(0, 0, 0)));
+    rt::independent_sampler s(4);
+    for (const auto& [a, b] : {std::pair<real, real>(0.25, 0.75), {0.5, 0.125}, {0.875, 0.5}}) {
+        for (real z : {real(3), real(-3)}) {
+            CAPTURE(a, b, z);
             s.start_pixel_sample(0, 0, 0);
+            const rt::ray r(point3(-1 + 2 * a, -1 + 2 * b, z), vec3(0, 0, -z));
             CHECK(exactly(tracer.radiance(r, s, 50), color(a, b, 0)));
         }
     }
