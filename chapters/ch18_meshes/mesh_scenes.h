@@ -1,0 +1,57 @@
+// Chapter 18's scenes: a model from a file in book 3's Cornell box, where book 3's glass sphere
+// stood (its tall box stays), as a white diffuse object, as glass, and as a light.
+#pragma once
+
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ch11_instances/cornell_box.h"
+#include "rt/geometry/triangle_mesh.h"
+#include "rt/materials/dielectric.h"
+#include "rt/materials/diffuse_light.h"
+#include "rt/materials/lambertian.h"
+#include "rt/models/obj_model.h"
+
+// The model scaled, without turning it, to `height` (its box's y extent), its box's floor centre
+// moved to `base`: a scan comes in its own units, wherever its author left it.
+inline rt::mesh_data fitted(rt::mesh_data model, const rt::point3& base, rt::real height) {
+    rt::aabb box;
+    for (const rt::point3& p : model.positions) box = rt::aabb(box, rt::aabb(p, p));
+    const rt::real scale = height / box.y.size();
+    const rt::point3 floor_centre((box.x.min + box.x.max) / 2, box.y.min,
+                                  (box.z.min + box.z.max) / 2);
+    for (rt::point3& p : model.positions) p = base + scale * (p - floor_centre);
+    return model;
+}
+
+// The kinds of model the chapter shows.
+enum class model_look { white, glass, light };
+
+// The model in book 3's Cornell box: 180 units tall, standing where the glass sphere did. Its
+// warnings (materials ignored, degenerate triangles dropped) go to stderr, one line each.
+inline rt::scene model_in_cornell_box(const std::string& model_file, model_look look) {
+    using rt::color, rt::point3, rt::vec3;
+    cornell_room room =
+        empty_cornell_room({point3(343, 554, 332), vec3(-130, 0, 0), vec3(0, 0, -105), 15});
+    auto objects = room.walls;
+    objects.emplace_back(placed_box(vec3(165, 330, 165), 15, vec3(265, 0, 295), room.white));
+    std::shared_ptr<rt::material> surface;
+    if (look == model_look::white) surface = room.white;
+    if (look == model_look::glass) surface = std::make_shared<rt::dielectric>(1.5);
+    if (look == model_look::light) surface = std::make_shared<rt::diffuse_light>(color(4, 3, 1.5));
+    std::vector<std::string> warnings;
+    rt::obj_model model = rt::read_obj(model_file);
+    for (const std::string& w : model.warnings) warnings.push_back(model_file + ": " + w);
+    auto mesh = std::make_shared<rt::triangle_mesh>(
+        fitted(std::move(model.mesh), point3(190, 0, 190), 180), surface);
+    if (mesh->dropped_triangles() > 0)
+        warnings.push_back(model_file + ": " + std::to_string(mesh->dropped_triangles()) +
+                           " degenerate triangles dropped");
+    for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+    objects.emplace_back(rt::mesh_object(mesh));
+    rt::scene scene                  = cornell_scene(objects);
+    scene.settings.samples_per_pixel = 100;
+    return scene;
+}

@@ -1,0 +1,48 @@
+// Reading a Wavefront OBJ model into a mesh's vertices and triangles. Chapter 18.
+// The parsing is Debian's tinyobjloader (its double-precision build). It has no limits of its
+// own, so the file's size and its counts of vertices and face corners are checked first, on the
+// raw text, before it reads anything: a model too big is refused before memory is taken.
+// What a model may hold, and what becomes of it:
+// - polygons (up to 255 corners, tinyobjloader's limit; more is refused): cut into triangles by
+//   ear clipping (polygon_triangulation.h), concave ones too;
+// - points (p) and lines (l): no surface to hit, ignored, with one warning;
+// - normals (vn) and texture coordinates (vt): kept per vertex when every face corner names one,
+//   else dropped with one warning (a mesh has them on every vertex or none);
+// - materials (mtllib, usemtl): ignored, with one warning; the scene gives the material;
+// - a vertex is stored once per distinct (position, uv, normal) triple the faces use;
+// - no triangle at all, an index outside the file's vertices, UTF-16 text, a NUL byte, or
+//   anything tinyobjloader cannot read: refused, with the file's name and, where known, line.
+// Degenerate triangles are the mesh's to drop (triangle_mesh.h): obj_mesh() adds its count to
+// the warnings.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "rt/geometry/triangle_mesh.h"
+
+namespace rt {
+
+struct obj_model {
+    mesh_data mesh;
+    std::vector<std::string> warnings;  // one line each, without the file's name
+};
+
+// The most bytes a model file may have: a million-triangle scan is about 60 MB of text.
+inline constexpr std::uintmax_t max_obj_bytes = std::uintmax_t(1) << 30;
+
+// The model in `text`, named `name` in messages. Throws user_error ("NAME: ...") for what is
+// refused.
+obj_model parse_obj(const std::string& text, const std::string& name);
+
+// The model in the file at `path` (read whole, after its size is checked).
+obj_model read_obj(const std::string& path);
+
+// The file's model as a mesh of `mat`, its warnings (with the degenerate triangles dropped)
+// in `warnings`, each starting with the file's name.
+std::shared_ptr<triangle_mesh> obj_mesh(const std::string& path, std::shared_ptr<material> mat,
+                                        std::vector<std::string>& warnings);
+
+}  // namespace rt
