@@ -5,12 +5,16 @@
 // edge compute it from the same two numbers, so no ray slips between them. The mesh is one
 // object of the scene with a BVH of its own over its triangles, and chapter 17's traversal
 // packs it with the rest.
-// --model renders another OBJ file in the same place; --look glass or light changes its surface.
+// Vertex normals, the file's or averaged from the triangles around each vertex, shade the facets
+// smooth; the silhouette stays a polygon.
+// --model renders another OBJ file in the same place; --look glass or light changes its surface;
+// --shading flat shows the facets.
 #include <string>
 
 #include "ch05_dielectric/fresnel_option.h"
 #include "mesh_scenes.h"
 #include "rt/accel/fast_traversal.h"
+#include "rt/accel/triangle_leaves.h"
 #include "rt/integrators/mis_tracer.h"
 #include "rt/integrators/path_tracer.h"
 #include "rt/program/asset_path.h"
@@ -20,17 +24,24 @@
 int main(int argc, char** argv) {
     rt::command_line cli("ch18_meshes");
     add_fresnel_option(cli);
-    std::string model = rt::asset_path("models/bunny.obj"), look = "white", integrator = "mis";
+    std::string model = rt::asset_path("models/bunny.obj"), look = "white", shading = "smooth";
+    std::string integrator = "mis";
     cli.add_text("--model", model, "OBJ model to place in book 3's Cornell box");
     cli.add_choice("--look", look, {"white", "glass", "light"},
                    "the model's surface: white (diffuse), glass, or light (it emits)");
+    cli.add_choice("--shading", shading, {"smooth", "flat"},
+                   "smooth (vertex normals: the file's, or averaged from its triangles), or "
+                   "flat (each triangle's own normal)");
     cli.add_choice("--integrator", integrator, {"mis", "path"},
                    "mis (chapter 15), or path (chapter 03)");
     return cli.run(argc, argv, [&] {
         const model_look as = look == "glass"   ? model_look::glass
                               : look == "light" ? model_look::light
                                                 : model_look::white;
-        rt::scene scene = rt::with_fast_traversal(model_in_cornell_box(model, as));
+        const model_shading normals =
+            shading == "flat" ? model_shading::flat : model_shading::smooth;
+        rt::scene scene = rt::with_fast_traversal(model_in_cornell_box(model, as, normals),
+                                                  {rt::triangle_leaves::maker()});
         scene.settings.make_sampler = rt::sobol_sampler::make;
         return integrator == "mis" ? rt::mis_trace(scene) : rt::path_trace(scene);
     });

@@ -1,5 +1,6 @@
 // Chapter 18's scenes: a model from a file in book 3's Cornell box, where book 3's glass sphere
-// stood (its tall box stays), as a white diffuse object, as glass, and as a light.
+// stood (its tall box stays), as a white diffuse object, as glass, and as a light; smooth or
+// flat.
 #pragma once
 
 #include <iostream>
@@ -13,6 +14,7 @@
 #include "rt/materials/diffuse_light.h"
 #include "rt/materials/lambertian.h"
 #include "rt/models/obj_model.h"
+#include "rt/models/vertex_normals.h"
 
 // The model scaled, without turning it, to `height` (its box's y extent), its box's floor centre
 // moved to `base`: a scan comes in its own units, wherever its author left it.
@@ -29,9 +31,14 @@ inline rt::mesh_data fitted(rt::mesh_data model, const rt::point3& base, rt::rea
 // The kinds of model the chapter shows.
 enum class model_look { white, glass, light };
 
+// Smooth: the file's vertex normals, or normals averaged from the triangles where it has none.
+// Flat: the triangles' own normals, facets and all.
+enum class model_shading { smooth, flat };
+
 // The model in book 3's Cornell box: 180 units tall, standing where the glass sphere did. Its
 // warnings (materials ignored, degenerate triangles dropped) go to stderr, one line each.
-inline rt::scene model_in_cornell_box(const std::string& model_file, model_look look) {
+inline rt::scene model_in_cornell_box(const std::string& model_file, model_look look,
+                                      model_shading shading = model_shading::smooth) {
     using rt::color, rt::point3, rt::vec3;
     cornell_room room =
         empty_cornell_room({point3(343, 554, 332), vec3(-130, 0, 0), vec3(0, 0, -105), 15});
@@ -44,6 +51,9 @@ inline rt::scene model_in_cornell_box(const std::string& model_file, model_look 
     std::vector<std::string> warnings;
     rt::obj_model model = rt::read_obj(model_file);
     for (const std::string& w : model.warnings) warnings.push_back(model_file + ": " + w);
+    if (shading == model_shading::flat) model.mesh.normals.clear();
+    if (shading == model_shading::smooth && model.mesh.normals.empty())
+        rt::add_smooth_normals(model.mesh);
     auto mesh = std::make_shared<rt::triangle_mesh>(
         fitted(std::move(model.mesh), point3(190, 0, 190), 180), surface);
     if (mesh->dropped_triangles() > 0)

@@ -5,14 +5,15 @@
 // that space the hit lies at (0, 0), and the 2D edge functions
 //   e0 = x1 y2 - y1 x2,  e1 = x2 y0 - y2 x0,  e2 = x0 y1 - y0 x1
 // of the moved vertices are the barycentric weights times twice the area (all negative when
-// the ray sees the winding the other way round). The ray hits where they do not differ in sign. Why it is watertight: the two triangles sharing an edge compute
-// that edge's function from the same two moved vertices, as the same two products in the other
-// order, so one gets exactly the other's negative; a ray on the edge sees 0 in both and hits
-// both, a ray beside it hits exactly one. No epsilon anywhere. (The products must be rounded
-// one by one, not fused: triangle.cpp and the leaves compile with -ffp-contract=off.)
-// Error bound: the hit point is b0 p0 + b1 p1 + b2 p2, on the plane to within a few ulps of
-// the vertices' coordinates; p_error is spawn_offset_scale times the largest of them, which
-// also covers the rounding of the next ray's test against the same plane (tests/ch18).
+// the ray sees the winding the other way round). The ray hits where they do not differ in sign. Why
+// it is watertight: the two triangles sharing an edge compute that edge's function from the same
+// two moved vertices, as the same two products in the other order, so one gets exactly the other's
+// negative; a ray on the edge sees 0 in both and hits both, a ray beside it hits exactly one. No
+// epsilon anywhere. (The products must be rounded one by one, not fused: triangle.cpp and the
+// leaves compile with -ffp-contract=off.) Error bound: the hit point is b0 p0 + b1 p1 + b2 p2, on
+// the plane to within a few ulps of the vertices' coordinates; p_error is spawn_offset_scale times
+// the largest of them, which also covers the rounding of the next ray's test against the same plane
+// (tests/ch18).
 #pragma once
 
 #include <cmath>
@@ -25,7 +26,7 @@ namespace rt {
 // What every triangle test of one ray shares: the axes' turn and the shear.
 struct sheared_ray {
     point3 origin;
-    int kx = 0, ky = 1, kz = 2;  // the turn: the ray's largest direction component becomes z
+    int kx = 0, ky = 1, kz = 2;   // the turn: the ray's largest direction component becomes z
     real sx = 0, sy = 0, sz = 1;  // the shear
 
     explicit sheared_ray(const ray& r) : origin(r.origin()) {
@@ -42,7 +43,7 @@ struct sheared_ray {
 
 // Where a ray meets a triangle: the distance and the barycentric weights of the three vertices.
 struct triangle_hit {
-    real t = 0;
+    real t  = 0;
     real b0 = 0, b1 = 0, b2 = 0;
 };
 
@@ -62,8 +63,8 @@ inline bool intersect_triangle(const sheared_ray& sr, const point3& p0, const po
     const real det = e0 + e1 + e2;
     if (!(det != 0)) return false;  // edge-on, a zero-area triangle, or NaN
     // The hit's distance times det, from the vertices' sheared z.
-    const real scaled_t = e0 * (sr.sz * a[sr.kz]) + e1 * (sr.sz * b[sr.kz]) +
-                          e2 * (sr.sz * c[sr.kz]);
+    const real scaled_t =
+        e0 * (sr.sz * a[sr.kz]) + e1 * (sr.sz * b[sr.kz]) + e2 * (sr.sz * c[sr.kz]);
     const real inv_det = 1 / det;
     const real t       = scaled_t * inv_det;
     if (!ray_t.surrounds(t)) return false;  // also false for inf and NaN

@@ -87,8 +87,8 @@ void triangle_mesh::shade(std::size_t i, const triangle_hit& hit, const ray& r,
                           hit_record& rec) const {
     if (!has_normals()) return;
     const auto& v = data_.triangles[i];
-    vec3 n = hit.b0 * data_.normals[v[0]] + hit.b1 * data_.normals[v[1]] +
-             hit.b2 * data_.normals[v[2]];
+    vec3 n =
+        hit.b0 * data_.normals[v[0]] + hit.b1 * data_.normals[v[1]] + hit.b2 * data_.normals[v[2]];
     if (!rec.front_face) n = -n;  // the model's normals point out, as its winding does
     const real length = n.length();
     if (!(length > 0) || !std::isfinite(length)) return;  // no usable normal: the geometric one
@@ -98,9 +98,12 @@ void triangle_mesh::shade(std::size_t i, const triangle_hit& hit, const ray& r,
     // into the surface, is turned towards it in the plane of the two.
     const real c = dot(n, g);
     if (!(c >= min_shading_cos)) {
-        const vec3 tangent = n - c * g;
-        const real sine    = tangent.length();
-        if (!(sine > 0)) return;
+        vec3 tangent    = n - c * g;
+        tangent         = tangent - dot(tangent, g) * g;  // what rounding left along g
+        const real sine = tangent.length();
+        // A normal (anti)parallel to g has no direction to lean in: its tangent part is
+        // rounding noise (found by fuzz/fuzz_obj.cpp, a model whose normals point inwards).
+        if (!(sine > real(1e-3))) return;
         n = min_shading_cos * g +
             std::sqrt(1 - min_shading_cos * min_shading_cos) * (tangent / sine);
     }
@@ -144,7 +147,7 @@ aabb mesh_triangle::bounding_box() const {
 surface_uv mesh_triangle::uv_at(const vec3& local) const {
     const real b1 = local.x(), b2 = local.y(), b0 = 1 - b1 - b2;
     if (!mesh_->has_uvs()) return {b1 + b2, b2};
-    const auto& v                = mesh_->triangle(index_);
+    const auto& v                      = mesh_->triangle(index_);
     const std::vector<surface_uv>& uvs = mesh_->data().uvs;
     return {b0 * uvs[v[0]].u + b1 * uvs[v[1]].u + b2 * uvs[v[2]].u,
             b0 * uvs[v[0]].v + b1 * uvs[v[1]].v + b2 * uvs[v[2]].v};

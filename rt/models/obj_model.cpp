@@ -51,7 +51,8 @@ bool blank(char c) {
     return c == ' ' || c == '\t';
 }
 
-// The line's words (split on spaces and tabs), each with its column (from 1).
+// The line's words (split on spaces and tabs), each with its column (from 1). A keyword counts
+// only when a blank follows it, as tinyobjloader reads it: a line "v" alone declares nothing.
 std::vector<std::pair<std::string_view, std::size_t>> words(std::string_view line) {
     std::vector<std::pair<std::string_view, std::size_t>> result;
     std::size_t i = 0;
@@ -61,6 +62,7 @@ std::vector<std::pair<std::string_view, std::size_t>> words(std::string_view lin
         while (i < line.size() && !blank(line[i])) ++i;
         if (i > begin) result.emplace_back(line.substr(begin, i - begin), begin + 1);
     }
+    if (result.size() == 1) result.clear();  // a keyword with nothing after it
     return result;
 }
 
@@ -96,8 +98,7 @@ declared count_elements(std::string_view text, const std::string& name) {
                       "more than " + std::to_string(triangle_mesh::max_vertices) + " vertices");
         if (d.triangles > triangle_mesh::max_triangles)
             refuse_at(name, number, 1,
-                      "more than " + std::to_string(triangle_mesh::max_triangles) +
-                          " triangles");
+                      "more than " + std::to_string(triangle_mesh::max_triangles) + " triangles");
     });
     return d;
 }
@@ -116,21 +117,22 @@ constexpr element_kind normals_kind{"normal", "normals"};
 void check_index(std::string_view word, std::size_t so_far, std::size_t total,
                  const element_kind& kind, const std::string& name, std::size_t line,
                  std::size_t column) {
-    long long index = 0;
+    long long index         = 0;
     const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), index);
     if (error != std::errc() || end != word.data() + word.size())
         refuse_at(name, line, column,
                   "'" + std::string(word) + "' is no " + kind.one + " index (an integer)");
     if (index == 0)
         refuse_at(name, line, column,
-                  std::string(kind.one) + " index 0 (an OBJ file counts from 1, or back from "
-                                          "-1)");
+                  std::string(kind.one) +
+                      " index 0 (an OBJ file counts from 1, or back from "
+                      "-1)");
     const bool ok = index > 0 ? std::size_t(index) <= total : std::size_t(-index) <= so_far;
     if (!ok)
         refuse_at(name, line, column,
                   std::string(kind.one) + " index " + std::to_string(index) + " is outside the " +
-                      std::to_string(index > 0 ? total : so_far) + " " + kind.many +
-                      " declared" + (index > 0 ? "" : " before it"));
+                      std::to_string(index > 0 ? total : so_far) + " " + kind.many + " declared" +
+                      (index > 0 ? "" : " before it"));
 }
 
 // The second pass: every face corner's indices name elements the file declares.
@@ -147,20 +149,19 @@ void check_faces(std::string_view text, const declared& d, const std::string& na
         for (std::size_t i = 1; i < w.size(); ++i) {
             // position[/uv[/normal]], with uv possibly empty: "3//5".
             const std::string_view corner = w[i].first;
-            std::size_t start = 0;
+            std::size_t start             = 0;
             for (int part = 0; part < 3 && start <= corner.size(); ++part) {
                 std::size_t slash = corner.find('/', start);
                 if (slash == std::string_view::npos) slash = corner.size();
                 const std::string_view index = corner.substr(start, slash - start);
                 const std::size_t column     = w[i].second + start;
                 if (part == 0 || !index.empty()) {
-                    if (part == 0) check_index(index, positions, d.positions, positions_kind,
-                                               name, number, column);
-                    if (part == 1)
-                        check_index(index, uvs, d.uvs, uvs_kind, name, number, column);
-                    if (part == 2)
-                        check_index(index, normals, d.normals, normals_kind, name, number,
+                    if (part == 0)
+                        check_index(index, positions, d.positions, positions_kind, name, number,
                                     column);
+                    if (part == 1) check_index(index, uvs, d.uvs, uvs_kind, name, number, column);
+                    if (part == 2)
+                        check_index(index, normals, d.normals, normals_kind, name, number, column);
                 }
                 start = slash + 1;
             }
@@ -191,8 +192,8 @@ std::string first_line(const std::string& text) {
 
 obj_model parse_obj(const std::string& raw, const std::string& name) {
     std::string_view text = raw;
-    if (text.size() >= 2 && ((text[0] == '\xff' && text[1] == '\xfe') ||
-                             (text[0] == '\xfe' && text[1] == '\xff')))
+    if (text.size() >= 2 &&
+        ((text[0] == '\xff' && text[1] == '\xfe') || (text[0] == '\xfe' && text[1] == '\xff')))
         refuse(name, "UTF-16 text; an OBJ model is ASCII or UTF-8 (save it as UTF-8)");
     if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos)
         refuse(name, "a NUL byte at byte " + std::to_string(nul + 1) +
@@ -202,17 +203,48 @@ obj_model parse_obj(const std::string& raw, const std::string& name) {
     const declared d = count_elements(text, name);
     check_faces(text, d, name);
 
+    // tinyobjloader reads the kinds of line below; the others it knows (skin weights vw,
+    // subdivision tags t, free-form curves) carry no triangles, and it has faults on some of
+    // them (a vw joint beyond an int's range is undefined behaviour, fuzz/regressions/obj): they
+    // become comments before it reads, with one warning.
+    std::string kept(text);
+    std::size_t ignored = 0;
+    for_each_line(text, [&](std::size_t, std::string_view line, std::size_t start) {
+        const std::size_t first = line.find_first_not_of(" \t");
+        if (first == std::string_view::npos || line[first] == '#') return;
+        const std::string_view keyword =
+            line.substr(first, line.find_first_of(" \t", first) - first);
+        for (const char* read : {"v", "vn", "vt", "f", "l", "p", "o", "g", "s", "mtllib", "usemtl"})
+            if (keyword == read) return;
+        kept[start + first] = '#';
+        ++ignored;
+    });
+
     tinyobj::ObjReaderConfig config;
     config.triangulate  = false;  // its fan covers a concave polygon's notches: ours clips ears
     config.vertex_color = false;
     tinyobj::ObjReader reader;
     // The material library text is empty: materials come from the scene, never from a file
     // beside the model.
-    if (!reader.ParseFromString(std::string(text), "", config))
-        refuse(name, first_line(reader.Error()));
+    if (!reader.ParseFromString(kept, "", config)) refuse(name, first_line(reader.Error()));
 
     obj_model model;
     const tinyobj::attrib_t& attrib = reader.GetAttrib();
+    // The checks above read the text as tinyobjloader does; should the two ever disagree, an
+    // index outside what it read is still refused here, before anything is looked up.
+    const auto read_positions = int(attrib.vertices.size() / 3);
+    const auto read_normals   = int(attrib.normals.size() / 3);
+    const auto read_uvs       = int(attrib.texcoords.size() / 2);
+    for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+        for (const tinyobj::index_t& corner : shape.mesh.indices) {
+            if (corner.vertex_index < 0 || corner.vertex_index >= read_positions ||
+                corner.normal_index < -1 || corner.normal_index >= read_normals ||
+                corner.texcoord_index < -1 || corner.texcoord_index >= read_uvs)
+                refuse(name, "a face corner names an element tinyobjloader did not read (vertex " +
+                                 std::to_string(corner.vertex_index + 1) + " of " +
+                                 std::to_string(read_positions) + ")");
+        }
+    }
     bool every_normal = true, every_uv = true;
     std::size_t points = 0, lines = 0;
     for (const tinyobj::shape_t& shape : reader.GetShapes()) {
@@ -226,18 +258,24 @@ obj_model parse_obj(const std::string& raw, const std::string& name) {
     const bool normals = every_normal && !attrib.normals.empty();
     const bool uvs     = every_uv && !attrib.texcoords.empty();
     if (d.normals > 0 && !normals)
-        model.warnings.push_back("normals (vn) on only some face corners: all ignored, the "
-                                 "triangles are flat");
+        model.warnings.push_back(
+            "normals (vn) on only some face corners: all ignored, the "
+            "triangles are flat");
     if (d.uvs > 0 && !uvs)
-        model.warnings.push_back("texture coordinates (vt) on only some face corners: all "
-                                 "ignored");
+        model.warnings.push_back(
+            "texture coordinates (vt) on only some face corners: all "
+            "ignored");
     if (points + lines > 0)
-        model.warnings.push_back(std::to_string(points) + " points and " +
-                                 std::to_string(lines) +
+        model.warnings.push_back(std::to_string(points) + " points and " + std::to_string(lines) +
                                  " lines ignored (no surface for a ray to hit)");
+    if (ignored > 0)
+        model.warnings.push_back(std::to_string(ignored) +
+                                 " lines of other kinds ignored (only v, vn, vt, f, l, p, o, g, "
+                                 "s, mtllib and usemtl are read)");
     if (d.materials)
-        model.warnings.push_back("materials (mtllib, usemtl) ignored: the scene gives the "
-                                 "mesh its material");
+        model.warnings.push_back(
+            "materials (mtllib, usemtl) ignored: the scene gives the "
+            "mesh its material");
 
     mesh_data& mesh = model.mesh;
     std::unordered_map<corner_key, std::uint32_t, corner_hash> vertex_of;
@@ -268,8 +306,8 @@ obj_model parse_obj(const std::string& raw, const std::string& name) {
         std::size_t first = 0;
         for (const unsigned char corners : shape.mesh.num_face_vertices) {
             if (corners == 3) {
-                mesh.triangles.push_back({vertex(c[first]), vertex(c[first + 1]),
-                                          vertex(c[first + 2])});
+                mesh.triangles.push_back(
+                    {vertex(c[first]), vertex(c[first + 1]), vertex(c[first + 2])});
             } else if (corners > 3) {
                 polygon.clear();
                 for (std::size_t k = 0; k < corners; ++k) {

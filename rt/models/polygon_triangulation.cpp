@@ -59,7 +59,7 @@ polygon_triangles triangulate_polygon(const std::vector<point3>& corners) {
     for (std::size_t i = 0; i < n; ++i) left[i] = std::uint32_t(i);
     std::size_t at = 0, misses = 0;
     while (left.size() > 3) {
-        const std::size_t m = left.size();
+        const std::size_t m   = left.size();
         const std::uint32_t a = left[(at + m - 1) % m], b = left[at % m], c = left[(at + 1) % m];
         bool ear = turn(p[a], p[b], p[c]) > 0;
         for (std::size_t k = 0; ear && k < m; ++k) {
