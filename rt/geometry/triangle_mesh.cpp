@@ -7,6 +7,8 @@
 
 #include "rt/core/error.h"
 #include "rt/core/validate.h"
+#include "rt/lights/mesh_light.h"
+#include "rt/materials/diffuse_light.h"
 
 namespace rt {
 
@@ -44,6 +46,7 @@ void refuse_count(std::size_t count, std::size_t limit, const char* what) {
 triangle_mesh::triangle_mesh(mesh_data data, std::shared_ptr<material> mat)
     : data_(std::move(data)), mat_(std::move(mat)) {
     require_given(mat_, "mesh material");
+    emits_              = dynamic_cast<const diffuse_light*>(mat_.get()) != nullptr;
     const std::size_t n = data_.positions.size();
     refuse_count(n, max_vertices, "mesh vertex count");
     refuse_count(data_.triangles.size(), max_triangles, "mesh triangle count");
@@ -162,6 +165,25 @@ std::shared_ptr<bvh> mesh_object(const std::shared_ptr<triangle_mesh>& mesh) {
     for (mesh_triangle& face : mesh->faces_)
         objects.emplace_back(std::shared_ptr<mesh_triangle>(mesh, &face));
     return std::make_shared<bvh>(objects);
+}
+
+std::shared_ptr<bvh> mesh_tree(const triangle_mesh& mesh) {
+    std::vector<bounded_object> objects;
+    objects.reserve(mesh.triangle_count());
+    // Pointers that own nothing (an empty owner): the mesh is kept alive by whoever holds it.
+    // The tree asks only const members of them.
+    for (const mesh_triangle& face : mesh.faces_)
+        objects.emplace_back(std::shared_ptr<mesh_triangle>(std::shared_ptr<void>(),
+                                                            const_cast<mesh_triangle*>(&face)));
+    return std::make_shared<bvh>(objects);
+}
+
+bool mesh_triangle::emits() const {
+    return mesh_->emits();
+}
+
+std::unique_ptr<light> mesh_triangle::make_group_light() const {
+    return std::make_unique<mesh_light>(*mesh_);
 }
 
 std::shared_ptr<bvh> mesh_object(mesh_data data, std::shared_ptr<material> mat) {

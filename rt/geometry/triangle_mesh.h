@@ -21,6 +21,7 @@
 #include "rt/accel/bounded.h"
 #include "rt/accel/bvh.h"
 #include "rt/geometry/triangle.h"
+#include "rt/lights/light_set.h"
 
 namespace rt {
 
@@ -36,10 +37,15 @@ struct mesh_data {
 
 class triangle_mesh;
 
-// One triangle of a mesh, as a shape: its mesh and its index.
-class mesh_triangle final : public bounded_hittable {
+// One triangle of a mesh, as a shape: its mesh and its index. A triangle of an emitting mesh
+// is a part of the mesh's one light (rt/lights/mesh_light.h).
+class mesh_triangle final : public bounded_hittable, public light_part {
   public:
     mesh_triangle(const triangle_mesh* mesh, std::uint32_t index) : mesh_(mesh), index_(index) {}
+
+    bool emits() const override;
+    const void* light_group() const override { return mesh_; }
+    std::unique_ptr<light> make_group_light() const override;
 
     bool hit(const ray& r, interval ray_t, hit_record& rec) const override;
     aabb bounding_box() const override;
@@ -82,6 +88,7 @@ class triangle_mesh {
     const point3& position(std::uint32_t vertex) const { return data_.positions[vertex]; }
     const mesh_data& data() const { return data_; }
     const material* surface() const { return mat_.get(); }
+    bool emits() const { return emits_; }  // its material is a diffuse_light
     const std::vector<mesh_triangle>& faces() const { return faces_; }
 
     // The bytes the mesh holds: vertices, indices, triangles.
@@ -93,11 +100,13 @@ class triangle_mesh {
 
   private:
     friend std::shared_ptr<bvh> mesh_object(const std::shared_ptr<triangle_mesh>& mesh);
+    friend std::shared_ptr<bvh> mesh_tree(const triangle_mesh& mesh);
 
     mesh_data data_;
     std::shared_ptr<material> mat_;
     std::vector<mesh_triangle> faces_;
     std::size_t dropped_ = 0;
+    bool emits_          = false;
 };
 
 // The mesh as one object of a scene: chapter 07's BVH over its triangles (chapter 17's fast
@@ -105,5 +114,7 @@ class triangle_mesh {
 // triangle_leaves). The BVH's objects share the mesh's ownership.
 std::shared_ptr<bvh> mesh_object(const std::shared_ptr<triangle_mesh>& mesh);
 std::shared_ptr<bvh> mesh_object(mesh_data data, std::shared_ptr<material> mat);
+// The same tree over a mesh held elsewhere, which must outlive it (a mesh light's own).
+std::shared_ptr<bvh> mesh_tree(const triangle_mesh& mesh);
 
 }  // namespace rt

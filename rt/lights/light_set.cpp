@@ -27,11 +27,30 @@ class light_finder : public part_visitor {
             add(part, std::make_unique<quad_light>(*q));
         else if (const auto* s = dynamic_cast<const sphere*>(&part); s && is_light(s->surface()))
             add(part, std::make_unique<sphere_light>(*s));
+        else if (const auto* p = dynamic_cast<const light_part*>(&part); p && p->emits())  // [ch18]
+            add_part(part, *p);                                                            // [ch18]
         else
             part.visit_parts(*this);
     }
 
+    // [ch18 begin]
+    // The parts of group lights, each with its light's index in `found`.
+    std::vector<std::pair<const hittable*, std::size_t>> parts;
+    // [ch18 end]
+
   private:
+    // [ch18 begin]
+    std::unordered_map<const void*, std::size_t> group_light;
+    void add_part(const hittable& shape, const light_part& part) {
+        auto [at, added] = group_light.try_emplace(part.light_group(), found.size());
+        if (added) {
+            shapes.push_back(&shape);  // `shapes` stays one per light: the first part found
+            found.push_back(part.make_group_light());
+        }
+        parts.emplace_back(&shape, at->second);
+    }
+    // [ch18 end]
+
     void add(const hittable& shape, std::unique_ptr<light> l) {
         // A shape placed twice in the same list is still one light.
         if (std::find(shapes.begin(), shapes.end(), &shape) != shapes.end()) return;
@@ -47,6 +66,9 @@ light_set::light_set(const hittable& world, const background& background_sky) {
     finder.visit(world);
     for (std::size_t i = 0; i < finder.found.size(); ++i)
         light_of_shape[finder.shapes[i]] = finder.found[i].get();
+    // [ch18 begin]
+    for (const auto& [shape, i] : finder.parts) light_of_shape[shape] = finder.found[i].get();
+    // [ch18 end]
     lights = std::move(finder.found);
     if (sky_light::emits(background_sky)) {
         lights.push_back(std::make_unique<sky_light>(background_sky));

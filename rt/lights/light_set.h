@@ -5,6 +5,8 @@
 // Not found (so only hit, never aimed at, and then counted with full weight, which keeps every
 // estimate unbiased): emitters inside instances, moving spheres that emit, textured emitters'
 // dark parts are still sampled.
+// Chapter 18 adds lights of many parts (light_part): a mesh's emitting triangles are one light,
+// chosen like any other, which picks among its triangles itself (rt/lights/mesh_light.h).
 #pragma once
 
 #include <memory>
@@ -15,6 +17,22 @@
 #include "rt/scene/background.h"
 
 namespace rt {
+
+// [ch18 begin]
+// A shape that is one part of a larger light (a mesh's triangle): the light set makes one light
+// for all the parts of a group, and a hit on any part leads to it.
+class light_part {
+  public:
+    virtual bool emits() const = 0;
+    // What the parts of one light share.
+    virtual const void* light_group() const = 0;
+    // The group's light, made once, when its first emitting part is found.
+    virtual std::unique_ptr<light> make_group_light() const = 0;
+
+  protected:
+    ~light_part() = default;
+};
+// [ch18 end]
 
 class light_set {
   public:
