@@ -48,17 +48,13 @@ inline rt::scene model_in_cornell_box(const std::string& model_file, model_look 
     if (look == model_look::white) surface = room.white;
     if (look == model_look::glass) surface = std::make_shared<rt::dielectric>(1.5);
     if (look == model_look::light) surface = std::make_shared<rt::diffuse_light>(color(4, 3, 1.5));
-    std::vector<std::string> warnings;
     rt::obj_model model = rt::read_obj(model_file);
-    for (const std::string& w : model.warnings) warnings.push_back(model_file + ": " + w);
     if (shading == model_shading::flat) model.mesh.normals.clear();
     if (shading == model_shading::smooth && model.mesh.normals.empty())
         rt::add_smooth_normals(model.mesh);
-    auto mesh = std::make_shared<rt::triangle_mesh>(
-        fitted(std::move(model.mesh), point3(190, 0, 190), 180), surface);
-    if (mesh->dropped_triangles() > 0)
-        warnings.push_back(model_file + ": " + std::to_string(mesh->dropped_triangles()) +
-                           " degenerate triangles dropped");
+    model.mesh = fitted(std::move(model.mesh), point3(190, 0, 190), 180);
+    std::vector<std::string> warnings;
+    auto mesh = rt::mesh_of_model(std::move(model), surface, model_file, warnings);
     for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
     objects.emplace_back(rt::mesh_object(mesh));
     rt::scene scene                  = cornell_scene(objects);

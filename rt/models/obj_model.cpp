@@ -18,6 +18,11 @@ namespace rt {
 
 namespace {
 
+// "1 polygon", "2 polygons".
+std::string counted(std::size_t n, const char* one, const char* many) {
+    return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
 [[noreturn]] void refuse(const std::string& name, const std::string& why) {
     throw user_error(name + ": " + why);
 }
@@ -32,7 +37,8 @@ struct declared {
     std::size_t positions = 0, normals = 0, uvs = 0;
     std::size_t triangles = 0;  // after triangulation: a face of n corners makes n - 2
     std::size_t points = 0, lines = 0;
-    bool materials = false;
+    std::size_t short_faces = 0;  // of one or two corners: no triangle
+    bool materials          = false;
 };
 
 // The text's lines, each with its number (from 1), split on \n, \r\n or a lone \r.
@@ -86,6 +92,7 @@ declared count_elements(std::string_view text, const std::string& name) {
                 refuse_at(name, number, 1,
                           "a face of " + std::to_string(corners) + " corners (at most 255)");
             if (corners >= 3) d.triangles += corners - 2;
+            if (corners < 3) ++d.short_faces;
         } else if (kind == "p") {
             ++d.points;
         } else if (kind == "l") {
@@ -117,11 +124,14 @@ constexpr element_kind normals_kind{"normal", "normals"};
 void check_index(std::string_view word, std::size_t so_far, std::size_t total,
                  const element_kind& kind, const std::string& name, std::size_t line,
                  std::size_t column) {
-    long long index         = 0;
-    const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), index);
-    if (error != std::errc() || end != word.data() + word.size())
+    long long index = 0;
+    // A '+' before the digits is read as tinyobjloader reads it; from_chars takes none.
+    const std::string_view digits = word.substr(word.size() > 1 && word[0] == '+' ? 1 : 0);
+    const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), index);
+    if (error != std::errc() || end != digits.data() + digits.size())
         refuse_at(name, line, column,
-                  "'" + std::string(word) + "' is no " + kind.one + " index (an integer)");
+                  "'" + std::string(word) + "' is no " + kind.one + " index (an integer" +
+                      (word[0] == '#' ? "; a comment takes a line of its own)" : ")"));
     if (index == 0)
         refuse_at(name, line, column,
                   std::string(kind.one) +
@@ -245,33 +255,39 @@ obj_model parse_obj(const std::string& raw, const std::string& name) {
                                  std::to_string(read_positions) + ")");
         }
     }
-    bool every_normal = true, every_uv = true;
+    bool every_normal = true, every_uv = true, some_normal = false, some_uv = false;
     std::size_t points = 0, lines = 0;
     for (const tinyobj::shape_t& shape : reader.GetShapes()) {
         for (const tinyobj::index_t& corner : shape.mesh.indices) {
             every_normal &= corner.normal_index >= 0;
             every_uv &= corner.texcoord_index >= 0;
+            some_normal |= corner.normal_index >= 0;
+            some_uv |= corner.texcoord_index >= 0;
         }
         points += shape.points.indices.size();
         lines += shape.lines.num_line_vertices.size();
     }
     const bool normals = every_normal && !attrib.normals.empty();
     const bool uvs     = every_uv && !attrib.texcoords.empty();
-    if (d.normals > 0 && !normals)
+    if (some_normal && !normals)
         model.warnings.push_back(
             "normals (vn) on only some face corners: all ignored, the "
             "triangles are flat");
-    if (d.uvs > 0 && !uvs)
+    if (some_uv && !uvs)
         model.warnings.push_back(
             "texture coordinates (vt) on only some face corners: all "
             "ignored");
     if (points + lines > 0)
-        model.warnings.push_back(std::to_string(points) + " points and " + std::to_string(lines) +
-                                 " lines ignored (no surface for a ray to hit)");
+        model.warnings.push_back(counted(points, "point", "points") + " and " +
+                                 counted(lines, "line", "lines") +
+                                 " ignored (no surface for a ray to hit)");
+    if (d.short_faces > 0)
+        model.warnings.push_back(counted(d.short_faces, "face", "faces") +
+                                 " of fewer than 3 corners ignored (no surface)");
     if (ignored > 0)
-        model.warnings.push_back(std::to_string(ignored) +
-                                 " lines of other kinds ignored (only v, vn, vt, f, l, p, o, g, "
-                                 "s, mtllib and usemtl are read)");
+        model.warnings.push_back(counted(ignored, "line", "lines") +
+                                 " of other kinds ignored (only v, vn, vt, f, l, p, o, g, s, "
+                                 "mtllib and usemtl are read)");
     if (d.materials)
         model.warnings.push_back(
             "materials (mtllib, usemtl) ignored: the scene gives the "
@@ -325,13 +341,13 @@ obj_model parse_obj(const std::string& raw, const std::string& name) {
         }
     }
     if (not_simple > 0)
-        model.warnings.push_back(std::to_string(not_simple) +
-                                 " polygons are not simple (their edges cross, or they are not "
-                                 "flat): cut as fans, which may cover more than they do");
+        model.warnings.push_back(counted(not_simple, "polygon is", "polygons are") +
+                                 " not simple (edges cross, or not flat): cut as fans, which "
+                                 "may cover more than they do");
     if (mesh.triangles.empty())
-        refuse(name, "holds no triangle (" + std::to_string(d.positions) + " vertices, " +
-                         std::to_string(points) + " points, " + std::to_string(lines) +
-                         " lines): not a mesh");
+        refuse(name, "holds no triangle (" + counted(d.positions, "vertex", "vertices") + ", " +
+                         counted(points, "point", "points") + ", " +
+                         counted(lines, "line", "lines") + "): not a mesh");
     return model;
 }
 
@@ -349,16 +365,25 @@ obj_model read_obj(const std::string& path) {
     return parse_obj(text, path);
 }
 
+std::shared_ptr<triangle_mesh> mesh_of_model(obj_model model, std::shared_ptr<material> mat,
+                                             const std::string& name,
+                                             std::vector<std::string>& warnings) {
+    for (const std::string& warning : model.warnings) warnings.push_back(name + ": " + warning);
+    auto mesh = std::make_shared<triangle_mesh>(std::move(model.mesh), std::move(mat));
+    const std::size_t dropped = mesh->dropped_triangles();
+    if (mesh->triangle_count() == 0)
+        refuse(name, "every triangle is degenerate (" + std::to_string(dropped) +
+                         " dropped): not a mesh");
+    if (dropped > 0)
+        warnings.push_back(name + ": " +
+                           counted(dropped, "degenerate triangle", "degenerate triangles") +
+                           " dropped (zero area, a vertex repeated, or a coordinate not finite)");
+    return mesh;
+}
+
 std::shared_ptr<triangle_mesh> obj_mesh(const std::string& path, std::shared_ptr<material> mat,
                                         std::vector<std::string>& warnings) {
-    obj_model model = read_obj(path);
-    for (const std::string& warning : model.warnings) warnings.push_back(path + ": " + warning);
-    auto mesh = std::make_shared<triangle_mesh>(std::move(model.mesh), std::move(mat));
-    if (mesh->dropped_triangles() > 0)
-        warnings.push_back(path + ": " + std::to_string(mesh->dropped_triangles()) +
-                           " degenerate triangles dropped (zero area, a vertex repeated, or a "
-                           "coordinate not finite)");
-    return mesh;
+    return mesh_of_model(read_obj(path), std::move(mat), path, warnings);
 }
 
 }  // namespace rt

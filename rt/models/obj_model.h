@@ -5,15 +5,18 @@
 // What a model may hold, and what becomes of it:
 // - polygons (up to 255 corners, tinyobjloader's limit; more is refused): cut into triangles by
 //   ear clipping (polygon_triangulation.h), concave ones too;
-// - points (p) and lines (l): no surface to hit, ignored, with one warning;
+// - points (p), lines (l) and faces of fewer than 3 corners: no surface to hit, ignored, with
+//   one warning;
+// - lines of other kinds (skin weights vw, tags t, free-form curves...): comments before
+//   tinyobjloader reads them, with one warning (it has faults on some of them);
 // - normals (vn) and texture coordinates (vt): kept per vertex when every face corner names one,
 //   else dropped with one warning (a mesh has them on every vertex or none);
 // - materials (mtllib, usemtl): ignored, with one warning; the scene gives the material;
 // - a vertex is stored once per distinct (position, uv, normal) triple the faces use;
 // - no triangle at all, an index outside the file's vertices, UTF-16 text, a NUL byte, or
 //   anything tinyobjloader cannot read: refused, with the file's name and, where known, line.
-// Degenerate triangles are the mesh's to drop (triangle_mesh.h): obj_mesh() adds its count to
-// the warnings.
+// Degenerate triangles are the mesh's to drop (triangle_mesh.h): mesh_of_model() adds their
+// count to the warnings, and refuses a model with none left.
 #pragma once
 
 #include <cstdint>
@@ -40,8 +43,13 @@ obj_model parse_obj(const std::string& text, const std::string& name);
 // The model in the file at `path` (read whole, after its size is checked).
 obj_model read_obj(const std::string& path);
 
-// The file's model as a mesh of `mat`, its warnings (with the degenerate triangles dropped)
-// in `warnings`, each starting with the file's name.
+// The model as a mesh of `mat`; its warnings, and the count of degenerate triangles the mesh
+// dropped, added to `warnings`, each starting with `name`. Refused when no triangle is left.
+std::shared_ptr<triangle_mesh> mesh_of_model(obj_model model, std::shared_ptr<material> mat,
+                                             const std::string& name,
+                                             std::vector<std::string>& warnings);
+
+// The file's model as a mesh of `mat`: read_obj, then mesh_of_model.
 std::shared_ptr<triangle_mesh> obj_mesh(const std::string& path, std::shared_ptr<material> mat,
                                         std::vector<std::string>& warnings);
 

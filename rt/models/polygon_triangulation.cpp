@@ -81,6 +81,8 @@ polygon_triangles triangulate_polygon(const std::vector<point3>& corners) {
             return result;
         }
     }
+    // The last three corners turn the wrong way only if the polygon crossed itself.
+    if (!(turn(p[left[0]], p[left[1]], p[left[2]]) > 0)) result.fanned = true;
     result.triangles.push_back({left[0], left[1], left[2]});
     return result;
 }
