@@ -110,6 +110,12 @@ def make_files(folder, with_bomb):
         "half.png": old_png[:len(old_png) // 2],
         "notes.png": b"These are not the pixels you are looking for.\n",
         "huge.png": png(100000, 100000),
+        # OBJ models (chapter 18): an index past the vertices, UTF-16 text, points only, and a
+        # triangle of zero area.
+        "bad_index.obj": b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n",
+        "utf16.obj": "v 0 0 0\n".encode("utf-16"),
+        "points.obj": b"v 0 0 0\nv 1 0 0\nv 0 1 0\np 1 2 3\n",
+        "flat.obj": b"v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n",
     }
     if with_bomb:  # 256 MiB of zeros in about 256 KiB, where a 1 x 1 image needs 4 bytes
         files["bomb.png"] = png(1, 1, zeros_deflated(256))
