@@ -31,12 +31,12 @@
 
 #include "rt/accel/triangle_leaves.h"
 #include "rt/accel/wide_bvh.h"
+#include "rt/core/onb.h"
 #include "rt/core/rng.h"
 #include "rt/geometry/triangle_mesh.h"
 #include "rt/materials/lambertian.h"
 #include "rt/models/obj_model.h"
 #include "rt/samplers/sampling.h"
-#include "rt/core/onb.h"
 #include "single_precision.h"
 
 namespace {
@@ -64,8 +64,8 @@ rt::mesh_data subdivided(const rt::mesh_data& in) {
     out.positions = in.positions;
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> midpoint;
     auto middle = [&](std::uint32_t a, std::uint32_t b) {
-        auto key            = std::minmax(a, b);
-        auto [at, added]    = midpoint.try_emplace(key, std::uint32_t(out.positions.size()));
+        auto key         = std::minmax(a, b);
+        auto [at, added] = midpoint.try_emplace(key, std::uint32_t(out.positions.size()));
         if (added) out.positions.push_back((in.positions[a] + in.positions[b]) / 2);
         return at->second;
     };
@@ -106,15 +106,17 @@ struct embree_mesh {
         scene = rtcNewScene(device);
         rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
         RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-        auto* v       = static_cast<float*>(rtcSetNewGeometryBuffer(
-            g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), m.positions.size()));
+        auto* v       = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                                    RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+                                                                    m.positions.size()));
         for (const rt::point3& p : m.positions) {
             *v++ = float(p.x());
             *v++ = float(p.y());
             *v++ = float(p.z());
         }
-        auto* index = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-            g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), m.triangles.size()));
+        auto* index = static_cast<unsigned*>(
+            rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                    3 * sizeof(unsigned), m.triangles.size()));
         for (const auto& t : m.triangles) {
             *index++ = t[0];
             *index++ = t[1];
@@ -154,7 +156,7 @@ std::vector<rt::ray> rays_at(const rt::hittable& ours, const rt::aabb& box, std:
     for (std::size_t k = 0; k < camera && rays.size() < count; ++k) {
         rt::hit_record rec;
         if (!ours.hit(rays[k], rt::interval(0, rt::infinity), rec)) continue;
-        const rt::vec3 local = rt::sample_cosine_hemisphere({rng.uniform(), rng.uniform()});
+        const rt::vec3 local  = rt::sample_cosine_hemisphere({rng.uniform(), rng.uniform()});
         const rt::point3 from = rec.p + 4 * rec.p_error * rec.normal;
         rays.push_back(rt_bench::to_float(rt::ray(from, rt::onb(rec.normal).to_world(local))));
     }
@@ -168,8 +170,8 @@ mesh_result measure(const rt::mesh_data& data, std::size_t ray_count, int repeat
 
     const std::size_t heap_before = heap_bytes();
     double start                  = thread_seconds();
-    auto material = std::make_shared<rt::lambertian>(rt::color(0.5, 0.5, 0.5));
-    auto mesh     = std::make_shared<rt::triangle_mesh>(data, material);
+    auto material                 = std::make_shared<rt::lambertian>(rt::color(0.5, 0.5, 0.5));
+    auto mesh                     = std::make_shared<rt::triangle_mesh>(data, material);
     std::shared_ptr<rt::hittable> ours;
     {
         auto tree = rt::mesh_object(mesh);
@@ -179,11 +181,11 @@ mesh_result measure(const rt::mesh_data& data, std::size_t ray_count, int repeat
     out.ours_build = thread_seconds() - start;
     out.ours_bytes = double(heap_bytes() - heap_before) / double(out.triangles);
 
-    embree_held            = 0;
-    start                  = thread_seconds();
+    embree_held = 0;
+    start       = thread_seconds();
     const embree_mesh theirs(data);
-    out.embree_build       = thread_seconds() - start;
-    out.embree_bytes       = double(embree_held.load()) / double(out.triangles);
+    out.embree_build = thread_seconds() - start;
+    out.embree_bytes = double(embree_held.load()) / double(out.triangles);
 
     rt::aabb box;
     for (const rt::point3& p : data.positions) box = rt::aabb(box, rt::aabb(p, p));
@@ -270,7 +272,7 @@ int main(int argc, char** argv) {
         for (int level = 0; level <= levels; ++level) {
             if (level > 0) mesh = subdivided(mesh);
             const mesh_result r = measure(mesh, rays, repeat);
-            const double ours = double(r.rays) / median(r.ours_seconds);
+            const double ours   = double(r.rays) / median(r.ours_seconds);
             const double embree = double(r.rays) / median(r.embree_seconds);
             std::cout << std::setw(10) << r.triangles << std::fixed << std::setprecision(3)
                       << std::setw(12) << r.ours_build << std::setw(14) << r.embree_build
@@ -286,7 +288,8 @@ int main(int argc, char** argv) {
         json << std::setprecision(6) << "{\n  \"program\": \"mesh_anchor\",\n  \"embree\": \""
              << RTC_VERSION_STRING << "\",\n  \"real\": \""
              << (sizeof(rt::real) == 8 ? "double" : "float") << "\",\n  \"threads\": 1,\n"
-             << "  \"repeat\": " << repeat << ",\n  \"note\": \"" << note << "\",\n  \"meshes\": [\n";
+             << "  \"repeat\": " << repeat << ",\n  \"note\": \"" << note
+             << "\",\n  \"meshes\": [\n";
         for (std::size_t k = 0; k < results.size(); ++k) {
             const mesh_result& r = results[k];
             json << "    {\"triangles\": " << r.triangles << ", \"vertices\": " << r.vertices

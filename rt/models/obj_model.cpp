@@ -368,7 +368,11 @@ obj_model read_obj(const std::string& path) {
 std::shared_ptr<triangle_mesh> mesh_of_model(obj_model model, std::shared_ptr<material> mat,
                                              const std::string& name,
                                              std::vector<std::string>& warnings) {
-    for (const std::string& warning : model.warnings) warnings.push_back(name + ": " + warning);
+    for (const std::string& warning : model.warnings) {
+        std::string line = name;
+        line.append(": ").append(warning);
+        warnings.push_back(std::move(line));
+    }
     auto mesh = std::make_shared<triangle_mesh>(std::move(model.mesh), std::move(mat));
     const std::size_t dropped = mesh->dropped_triangles();
     if (mesh->triangle_count() == 0)
