@@ -9,11 +9,12 @@
 // it is watertight: the two triangles sharing an edge compute that edge's function from the same
 // two moved vertices, as the same two products in the other order, so one gets exactly the other's
 // negative; a ray on the edge sees 0 in both and hits both, a ray beside it hits exactly one. No
-// epsilon anywhere. (The products must be rounded one by one, not fused: triangle.cpp and the
-// leaves compile with -ffp-contract=off.) Error bound: the hit point is b0 p0 + b1 p1 + b2 p2, on
-// the plane to within a few ulps of the vertices' coordinates; p_error is spawn_offset_scale times
-// the largest of them, which also covers the rounding of the next ray's test against the same plane
-// (tests/ch18).
+// epsilon anywhere. (The products must be rounded one by one, not fused into a multiply-add:
+// chapter 18's layer compiles with -ffp-contract=off, and C++20's strict mode, in which every
+// target here builds, fuses none either.)
+// Error bound: the hit point is b0 p0 + b1 p1 + b2 p2, on the plane to within a few ulps of the
+// vertices' coordinates; p_error is spawn_offset_scale times the largest of them, which also
+// covers the rounding of the next ray's test against the same plane (tests/ch18).
 #pragma once
 
 #include <cmath>

@@ -17,9 +17,17 @@ namespace {
 // How far a shading normal may lean from the geometric one: cos 78 degrees. Its p_error is
 // divided by this cosine at most, so the spawn offset stays a few hundred ulps.
 constexpr real min_shading_cos = real(0.2);
-// A viewer closer to the shading plane than this fraction of its cosine to the geometric normal
-// sees the normal bent back towards the geometric one (a silhouette of a smooth mesh).
-constexpr real min_viewer_fraction = real(0.1);
+// How far above the true plane the mirror image of the incoming ray about the shading normal
+// must leave, as a fraction of the incoming ray's own cosine to the plane: a mirror or glass
+// reflection that stayed below it would meet the surface again and again (a silhouette of a
+// smooth mesh turns dark).
+constexpr real min_mirror_fraction = real(0.01);
+
+// Whether the mirror image of wo about the unit normal n leaves above the plane of g:
+// dot(2 dot(wo, n) n - wo, g) >= min_mirror_fraction * dot(wo, g).
+bool mirror_clears(const vec3& n, const vec3& g, const vec3& wo, real g_facing) {
+    return 2 * dot(wo, n) * dot(n, g) - g_facing >= min_mirror_fraction * g_facing;
+}
 
 bool finite(const point3& p) {
     return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z());
@@ -111,11 +119,21 @@ void triangle_mesh::shade(std::size_t i, const triangle_hit& hit, const ray& r,
             std::sqrt(1 - min_shading_cos * min_shading_cos) * (tangent / sine);
     }
     // Facing the viewer: blended towards the geometric normal until the ray sees its side.
-    const vec3 wo     = -unit_vector(r.direction());
-    const real facing = dot(n, wo), g_facing = dot(g, wo);
-    if (facing < min_viewer_fraction * g_facing) {
-        const real t = (min_viewer_fraction * g_facing - facing) / (g_facing - facing);
-        n            = unit_vector((1 - t) * n + t * g);
+    // Facing the viewer, and its mirror reflection leaving the surface: where it does not, the
+    // normal is blended towards the geometric one ((1 - t) n + t g; at t = 1 the reflection
+    // leaves as from a flat surface), t found by bisection: the least blend that clears, to
+    // 2^-20. This also keeps the viewer on the shading normal's side (dot(wo, n) > 0).
+    const vec3 wo       = -unit_vector(r.direction());
+    const real g_facing = dot(g, wo);
+    if (!mirror_clears(n, g, wo, g_facing)) {
+        const vec3 shading = n;
+        real low = 0, high = 1;
+        for (int step = 0; step < 20; ++step) {
+            const real t = (low + high) / 2;
+            (mirror_clears(unit_vector((1 - t) * shading + t * g), g, wo, g_facing) ? high : low) =
+                t;
+        }
+        n = high < 1 ? unit_vector((1 - high) * shading + high * g) : g;
     }
     // The spawn offset along n must clear the plane as p_error along g does.
     rec.p_error /= dot(n, g);

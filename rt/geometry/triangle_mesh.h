@@ -5,8 +5,10 @@
 // built once, whatever the scene around it. Its triangles are views into the mesh (the mesh and
 // an index), so the vertices are never copied per triangle.
 // Shading normals: where the model gives vertex normals, a hit's normal is their interpolation,
-// kept within the hemisphere of the true (geometric) normal on the ray's side, and facing the
-// ray: a normal that points into the surface, or away from the viewer, would make a black spot.
+// kept within 78 degrees of the true (geometric) normal on the ray's side (a normal that points
+// into the surface would make a black spot), and blended towards it until the mirror image of
+// the incoming ray leaves above the true plane (a mirror or glass reflection below it would meet
+// the surface again and again: a dark rim at a silhouette).
 // A new ray still leaves from the true surface, on its true side: p_error is scaled so that the
 // offset along the shading normal clears the plane as the geometric one would, and a direction
 // a material picks below the plane meets the surface again at once and scatters there, so no

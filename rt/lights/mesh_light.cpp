@@ -77,9 +77,18 @@ bool mesh_light::sample(const point3& ref, sample2 u, light_sample& out) const {
 }
 
 real mesh_light::pdf(const point3& ref, const vec3& wi) const {
+    // A direction is drawn by aiming at any point of the mesh along it, not only the nearest:
+    // its density sums every crossing (a closed mesh is crossed twice, in and out). The point
+    // a ray hits has pdf_at's density alone, which is what an MIS weight of that hit needs.
+    const ray r(ref, wi);
+    interval beyond(0, infinity);
     hit_record hit;
-    if (!tree->hit(ray(ref, wi), interval(0, infinity), hit)) return 0;
-    return pdf_at(ref, wi, hit);
+    real density = 0;
+    while (tree->hit(r, beyond, hit)) {
+        density += pdf_at(ref, wi, hit);
+        beyond.min = hit.t;  // the next crossing: strictly farther
+    }
+    return density;
 }
 
 real mesh_light::pdf_at(const point3& ref, const vec3& wi, const hit_record& hit) const {
