@@ -995,8 +995,8 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "light_set: a mesh placed twice is one light; inside an instance it is none, and "
-    "pdf_of_hit of its hits is 0; a mesh that does not emit is none",
+    "light_set: a mesh placed twice is one light, one inside an instance is none (its hits' "
+    "pdf_of_hit is 0), and a mesh that does not emit is none",
     "[ch18]") {
     auto mesh = mesh_of(
         height_field(point3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0), vec3(0, 0, 1), 8, 0.12));
