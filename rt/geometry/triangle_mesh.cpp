@@ -6,6 +6,7 @@
 #include <string>
 
 #include "rt/core/error.h"
+#include "rt/core/exercise.h"
 #include "rt/core/validate.h"
 #include "rt/lights/mesh_light.h"
 #include "rt/materials/diffuse_light.h"
@@ -97,6 +98,7 @@ std::size_t triangle_mesh::bytes() const {
 void triangle_mesh::shade(std::size_t i, const triangle_hit& hit, const ray& r,
                           hit_record& rec) const {
     if (!has_normals()) return;
+    // [exercise triangle_mesh::shade begin]
     const auto& v = data_.triangles[i];
     vec3 n =
         hit.b0 * data_.normals[v[0]] + hit.b1 * data_.normals[v[1]] + hit.b2 * data_.normals[v[2]];
@@ -118,7 +120,6 @@ void triangle_mesh::shade(std::size_t i, const triangle_hit& hit, const ray& r,
         n = min_shading_cos * g +
             std::sqrt(1 - min_shading_cos * min_shading_cos) * (tangent / sine);
     }
-    // Facing the viewer: blended towards the geometric normal until the ray sees its side.
     // Facing the viewer, and its mirror reflection leaving the surface: where it does not, the
     // normal is blended towards the geometric one ((1 - t) n + t g; at t = 1 the reflection
     // leaves as from a flat surface), t found by bisection: the least blend that clears, to
@@ -130,14 +131,17 @@ void triangle_mesh::shade(std::size_t i, const triangle_hit& hit, const ray& r,
         real low = 0, high = 1;
         for (int step = 0; step < 20; ++step) {
             const real t = (low + high) / 2;
-            (mirror_clears(unit_vector((1 - t) * shading + t * g), g, wo, g_facing) ? high : low) =
-                t;
+            if (mirror_clears(unit_vector((1 - t) * shading + t * g), g, wo, g_facing))
+                high = t;
+            else
+                low = t;
         }
         n = high < 1 ? unit_vector((1 - high) * shading + high * g) : g;
     }
     // The spawn offset along n must clear the plane as p_error along g does.
     rec.p_error /= dot(n, g);
     rec.normal = n;
+    // [exercise triangle_mesh::shade end]
 }
 
 bool mesh_triangle::hit(const ray& r, interval ray_t, hit_record& rec) const {

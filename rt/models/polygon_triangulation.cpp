@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "rt/core/exercise.h"
+
 namespace rt {
 
 namespace {
@@ -55,6 +57,7 @@ polygon_triangles triangulate_polygon(const std::vector<point3>& corners) {
         for (point2& q : p) q.y = -q.y;
     }
 
+    // [exercise triangulate_polygon begin]
     std::vector<std::uint32_t> left(n);
     for (std::size_t i = 0; i < n; ++i) left[i] = std::uint32_t(i);
     std::size_t at = 0, misses = 0;
@@ -85,6 +88,7 @@ polygon_triangles triangulate_polygon(const std::vector<point3>& corners) {
     if (!(turn(p[left[0]], p[left[1]], p[left[2]]) > 0)) result.fanned = true;
     result.triangles.push_back({left[0], left[1], left[2]});
     return result;
+    // [exercise triangulate_polygon end]
 }
 
 }  // namespace rt
