@@ -177,9 +177,9 @@ struct shading_checks {
             p_error.fail(where);
         // The mirror rule: the reflection of wo about the normal leaves the true plane by at
         // least 0.01 of wo's own cosine to it.
-        const real margin  = real(1e-3);
-        const real g_wo    = dot(g, wo);
-        const real clears  = 2 * dot(wo, raw) * dot(raw, g) - g_wo - real(0.01) * g_wo;
+        const real margin = real(1e-3);
+        const real g_wo   = dot(g, wo);
+        const real clears = 2 * dot(wo, raw) * dot(raw, g) - g_wo - real(0.01) * g_wo;
         if (dot(raw, g) < min_shading_cos - margin) {
             ++leaned_too_far;
         } else if (dot(raw, g) >= min_shading_cos && clears < 0) {
