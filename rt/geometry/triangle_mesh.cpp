@@ -138,8 +138,14 @@ void triangle_mesh::shade(std::size_t i, const triangle_hit& hit, const ray& r,
         }
         n = high < 1 ? unit_vector((1 - high) * shading + high * g) : g;
     }
-    // The spawn offset along n must clear the plane as p_error along g does.
-    rec.p_error /= dot(n, g);
+    // A new ray leaving on n's side starts at p + p_error n (spawn_ray.h). That must be the
+    // geometric offset p + p_error g: an offset along a leaning n would also move sideways by
+    // p_error tan(theta), and beside a concave corner (a room's walls) sideways can be through
+    // the next wall. So p_error grows by 1 / cos and p moves within the plane by the opposite of
+    // the sideways part: p + (p_error / cos) n is then exactly p + p_error g.
+    const real cos_g = dot(n, g);
+    rec.p            = rec.p + (rec.p_error / cos_g) * (cos_g * g - n);
+    rec.p_error /= cos_g;
     rec.normal = n;
     // [exercise triangle_mesh::shade end]
 }

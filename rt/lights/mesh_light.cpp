@@ -64,7 +64,9 @@ bool mesh_light::sample(const point3& ref, sample2 u, light_sample& out) const {
     // As a quad light does: aim at the point and let the triangle say where the ray meets it.
     if (!mesh->faces()[i].hit(ray(ref, target - ref), interval(0, infinity), out.on_light))
         return false;
-    const vec3 to_light = out.on_light.p - ref;
+    // The direction of the ray that met it (the hit's p may have moved a few ulps along the
+    // surface for its shading normal).
+    const vec3 to_light = target - ref;
     const real distance = to_light.length();
     if (!(distance > 0)) return false;
     out.wi  = to_light / distance;
@@ -86,16 +88,23 @@ real mesh_light::pdf(const point3& ref, const vec3& wi) const {
     real density = 0;
     while (tree->hit(r, beyond, hit)) {
         density += pdf_at(ref, wi, hit);
-        beyond.min = hit.t;  // the next crossing: strictly farther
+        // The next crossing: farther than this one's rounding, so that a direction through an
+        // edge, which both triangles there may answer a few ulps apart, counts it once.
+        beyond.min = hit.t + 2 * hit.p_error;
     }
     return density;
 }
 
 real mesh_light::pdf_at(const point3& ref, const vec3& wi, const hit_record& hit) const {
-    const auto& face            = *static_cast<const mesh_triangle*>(hit.object);
-    const real distance_squared = (hit.p - ref).length_squared();
-    const real cos_light        = std::fabs(dot(geometric_normal(*mesh, face.index()), wi));
-    const real density          = distance_squared / (cos_light * total_area);
+    // d^2 / (|cos| A) with d the distance along wi to the triangle's plane, h / |cos| for ref at
+    // height h above it: h^2 / (|cos|^3 A). From the plane, not from hit.p, which a shading
+    // normal moves a few ulps along the surface (triangle_mesh.cpp), so sample() and pdf() give
+    // a direction the same density whichever way they met the triangle.
+    const auto& face     = *static_cast<const mesh_triangle*>(hit.object);
+    const vec3 g         = geometric_normal(*mesh, face.index());
+    const real height    = dot(mesh->position(mesh->triangle(face.index())[0]) - ref, g);
+    const real cos_light = std::fabs(dot(g, wi));
+    const real density   = height * height / (cos_light * cos_light * cos_light * total_area);
     return cos_light > 0 && std::isfinite(density) ? density : 0;
 }
 

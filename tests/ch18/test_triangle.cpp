@@ -7,6 +7,7 @@
 // test with its usual epsilon, written here as a reference, does lose some of those same rays
 // (so the rays really probe the edges). Error bound: rays spawned from a hit never find the same
 // triangle again, at edges 1e-4..1e4 and 1e3 away, like chapter 03's spheres and quads.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
@@ -101,6 +102,25 @@ bool moller_trumbore_hits_any(const rt::mesh_data& m, const std::vector<std::uin
         if (moller_trumbore(r, p[0], p[1], p[2])) return true;
     }
     return false;
+}
+
+// How many times the whole line of r crosses the mesh, hits at one t (an edge or a vertex,
+// where the triangles around it all answer) counted once. A line through a closed mesh crosses
+// it an even number of times; an odd count is a gap between triangles.
+int crossings(const rt::mesh_data& m, const rt::ray& r) {
+    const rt::sheared_ray sr(r);
+    std::vector<real> ts;
+    for (std::size_t i = 0; i < m.triangles.size(); ++i) {
+        const auto p = rt_test::corners(m, i);
+        rt::triangle_hit h;
+        if (rt::intersect_triangle(sr, p[0], p[1], p[2], rt::interval::universe(), h))
+            ts.push_back(h.t);
+    }
+    std::sort(ts.begin(), ts.end());
+    int count = 0;
+    for (std::size_t k = 0; k < ts.size(); ++k)
+        if (k == 0 || !(ts[k] - ts[k - 1] <= 64 * eps * std::fabs(ts[k]))) ++count;
+    return count;
 }
 
 std::string ray_text(const rt::ray& r) {
@@ -201,7 +221,13 @@ watertight_result probe_watertight(const rt::mesh_data& m, bool closed, real siz
         rt::triangle_hit nearest;
         std::size_t index = 0;
         const bool hit    = rt_test::nearest_triangle_hit(m, r, forward, nearest, index);
-        if (!hit) misses.fail(ray_text(r));
+        // A grazing ray sees the shared edge on the mesh's silhouette. In float, the sheared
+        // vertices' rounding (relative to an origin up to 100 sizes away) moves the silhouette
+        // by ~1e-5 of the mesh, so a ray that the exact line takes just inside can pass just
+        // outside (4 of 25,000 on the icosphere): a tangent, not a gap. There a closed mesh is
+        // judged by what a gap would do: a line that crosses it an odd number of times.
+        const bool tangent = kind == 3 && !is_double && closed && crossings(m, r) % 2 == 0;
+        if (!hit && !tangent) misses.fail(ray_text(r));
         if (kind == 3) continue;
 
         // The aim is where the ray enters (the mesh is convex or flat, and the ray comes from in
@@ -616,9 +642,13 @@ TEST_CASE(
         const rt::mesh_triangle& face = mesh->faces().at(0);
         const vec3 n                  = rt::unit_vector(cross(p1 - p0, p2 - p0));
 
-        const real a     = uniform(rng, real(0.01), real(0.98));
-        const real b     = uniform(rng, real(0.01), real(0.99) - a);
-        const point3 aim = p0 + a * (p1 - p0) + b * (p2 - p0);
+        // The aim at least `margin` of the triangle inside every edge: in float a vertex 1e2
+        // away is rounded by 7.6e-6, which at a cosine of 0.05 moves a 1e-2 triangle's hit by
+        // 1.5e-4 of an edge's length (a primary ray missed, 1 in 100,000, at margin 0.01).
+        const real margin = is_double ? real(0.01) : real(0.05);
+        const real a      = uniform(rng, margin, 1 - 2 * margin);
+        const real b      = uniform(rng, margin, 1 - margin - a);
+        const point3 aim  = p0 + a * (p1 - p0) + b * (p2 - p0);
         const vec3 from = random_in_hemisphere(rng, rng.uniform() < real(0.5) ? n : -n, real(0.05));
         const point3 origin = aim + size * log_uniform(rng, range.log_min_distance, 2) * from;
         const rt::ray incoming(origin, log_uniform(rng, -3, 3) * (aim - origin));
