@@ -115,7 +115,7 @@ void triangle_mesh::shade(std::size_t i, const triangle_hit& hit, const ray& r,
         tangent         = tangent - dot(tangent, g) * g;  // what rounding left along g
         const real sine = tangent.length();
         // A normal (anti)parallel to g has no direction to lean in: its tangent part is
-        // rounding noise (found by fuzz/fuzz_obj.cpp, a model whose normals point inwards).
+        // rounding noise (a model whose normals point inwards; fuzz/regressions/obj keeps one).
         if (!(sine > real(1e-3))) return;
         n = min_shading_cos * g +
             std::sqrt(1 - min_shading_cos * min_shading_cos) * (tangent / sine);
