@@ -1,6 +1,7 @@
 // The mesh anchor: triangle meshes of 10^3 to 10^6 and more triangles (the Stanford bunny, and
 // the bunny subdivided 1 to 5 times), the same rays through our BVH (chapter 18's mesh object,
-// packed by chapter 17 with chapter 18's triangle leaves) and through Embree 3's own triangle
+// chapter 07's tree over the triangles, packed by mesh_bvh as the fast traversal packs it) and
+// through Embree 3's own triangle
 // geometry (rtcIntersect1, one ray at a time, one thread, closest hit). Per mesh: the build's
 // seconds (of this thread), the bytes per triangle the built structure holds, and the rays per
 // second of each.
@@ -29,8 +30,7 @@
 #include <utility>
 #include <vector>
 
-#include "rt/accel/triangle_leaves.h"
-#include "rt/accel/wide_bvh.h"
+#include "rt/accel/mesh_bvh.h"
 #include "rt/core/onb.h"
 #include "rt/core/rng.h"
 #include "rt/geometry/triangle_mesh.h"
@@ -175,8 +175,7 @@ mesh_result measure(const rt::mesh_data& data, std::size_t ray_count, int repeat
     std::shared_ptr<rt::hittable> ours;
     {
         auto tree = rt::mesh_object(mesh);
-        ours      = std::make_shared<rt::wide_bvh>(*tree, rt::wide_bvh::object_map{},
-                                              std::vector{rt::triangle_leaves::maker()});
+        ours      = std::make_shared<rt::mesh_bvh>(tree);
     }
     out.ours_build = thread_seconds() - start;
     out.ours_bytes = double(heap_bytes() - heap_before) / double(out.triangles);

@@ -14,7 +14,7 @@
 #include "ch05_dielectric/fresnel_option.h"
 #include "mesh_scenes.h"
 #include "rt/accel/fast_traversal.h"
-#include "rt/accel/triangle_leaves.h"
+#include "rt/accel/mesh_bvh.h"
 #include "rt/integrators/mis_tracer.h"
 #include "rt/integrators/path_tracer.h"
 #include "rt/program/asset_path.h"
@@ -40,8 +40,8 @@ int main(int argc, char** argv) {
                                                 : model_look::white;
         const model_shading normals =
             shading == "flat" ? model_shading::flat : model_shading::smooth;
-        rt::scene scene = rt::with_fast_traversal(model_in_cornell_box(model, as, normals),
-                                                  {rt::triangle_leaves::maker()});
+        rt::scene scene = rt::with_fast_traversal(model_in_cornell_box(model, as, normals), {},
+                                                  {rt::mesh_bvh::packer()});
         scene.settings.make_sampler = rt::sobol_sampler::make;
         return integrator == "mis" ? rt::mis_trace(scene) : rt::path_trace(scene);
     });

@@ -14,7 +14,8 @@ namespace {
 // two instances) stays one object.
 class rewrite {
   public:
-    explicit rewrite(const std::vector<leaf_shapes_maker>& kinds) : extra_kinds(kinds) {}
+    rewrite(const std::vector<leaf_shapes_maker>& kinds, const std::vector<tree_packer>& own)
+        : extra_kinds(kinds), packers(own) {}
 
     std::shared_ptr<hittable> operator()(const std::shared_ptr<hittable>& object) {
         if (!object) return object;
@@ -29,6 +30,8 @@ class rewrite {
     std::shared_ptr<hittable> faster(const std::shared_ptr<hittable>& object) {
         const hittable& o = *object;
         if (typeid(o) == typeid(bvh)) {
+            for (const tree_packer& pack : packers)
+                if (auto packed = pack(std::static_pointer_cast<const bvh>(object))) return packed;
             return std::make_shared<wide_bvh>(
                 static_cast<const bvh&>(o),
                 [this](const std::shared_ptr<hittable>& leaf) { return (*this)(leaf); },
@@ -68,18 +71,21 @@ class rewrite {
     }
 
     const std::vector<leaf_shapes_maker>& extra_kinds;
+    const std::vector<tree_packer>& packers;
     std::unordered_map<const hittable*, std::shared_ptr<hittable>> rewritten;
 };
 
 }  // namespace
 
 std::shared_ptr<hittable> with_wide_bvhs(const std::shared_ptr<hittable>& world,
-                                         const std::vector<leaf_shapes_maker>& extra_kinds) {
-    return rewrite(extra_kinds)(world);
+                                         const std::vector<leaf_shapes_maker>& extra_kinds,
+                                         const std::vector<tree_packer>& packers) {
+    return rewrite(extra_kinds, packers)(world);
 }
 
-scene with_fast_traversal(scene s, const std::vector<leaf_shapes_maker>& extra_kinds) {
-    s.world = with_wide_bvhs(s.world, extra_kinds);
+scene with_fast_traversal(scene s, const std::vector<leaf_shapes_maker>& extra_kinds,
+                          const std::vector<tree_packer>& packers) {
+    s.world = with_wide_bvhs(s.world, extra_kinds, packers);
     return s;
 }
 

@@ -76,8 +76,9 @@ inline bool intersect_triangle(const sheared_ray& sr, const point3& p0, const po
 
 // The largest |coordinate| of the three vertices: what a hit's rounding is relative to.
 inline real triangle_magnitude(const point3& p0, const point3& p1, const point3& p2) {
-    return std::fmax(max_abs_component(p0),
-                     std::fmax(max_abs_component(p1), max_abs_component(p2)));
+    // fmax's answer without its library call: none is negative, and a NaN loses.
+    auto larger = [](real a, real b) { return a > b || std::isnan(b) ? a : b; };
+    return larger(max_abs_component(p0), larger(max_abs_component(p1), max_abs_component(p2)));
 }
 
 // Fills rec's t, p, p_error, normal (the geometric one, unit(e1 x e2) of the winding p0, p1,

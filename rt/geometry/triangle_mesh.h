@@ -112,8 +112,8 @@ class triangle_mesh {
 };
 
 // The mesh as one object of a scene: chapter 07's BVH over its triangles (chapter 17's fast
-// traversal packs it like any other, and tests the triangles in its leaves inline through
-// triangle_leaves). The BVH's objects share the mesh's ownership.
+// traversal packs it with mesh_bvh::packer(): mesh_bvh.h). The BVH's objects share the mesh's
+// ownership.
 std::shared_ptr<bvh> mesh_object(const std::shared_ptr<triangle_mesh>& mesh);
 std::shared_ptr<bvh> mesh_object(mesh_data data, std::shared_ptr<material> mat);
 // The same tree over a mesh held elsewhere, which must outlive it (a mesh light's own).

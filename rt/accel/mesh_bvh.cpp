@@ -1,0 +1,361 @@
+#include "rt/accel/mesh_bvh.h"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <typeinfo>
+
+namespace rt {
+
+namespace {
+
+using float8 = float __attribute__((vector_size(32)));
+using float4 = float __attribute__((vector_size(16)));
+using int8   = int __attribute__((vector_size(32)));
+
+// The next float towards +inf or -inf, by its bits (std::nextafter is a library call, and this
+// runs a few times per ray). For finite f only.
+[[gnu::always_inline]] inline float next_float_up(float f) {
+    if (f == 0) return std::numeric_limits<float>::denorm_min();
+    const auto bits = std::bit_cast<std::uint32_t>(f);
+    return std::bit_cast<float>(f > 0 ? bits + 1 : bits - 1);
+}
+
+[[gnu::always_inline]] inline float next_float_down(float f) {
+    return -next_float_up(-f);
+}
+
+// The float nearest x on the side asked: x itself where it is a float, the largest float where
+// x lies beyond them all, an infinity where x is one.
+[[gnu::always_inline]] inline float rounded_down(real x) {
+    const float f = float(x);
+    if (!(real(f) > x)) return f;
+    return f == std::numeric_limits<float>::infinity() ? std::numeric_limits<float>::max()
+                                                       : next_float_down(f);
+}
+
+[[gnu::always_inline]] inline float rounded_up(real x) {
+    return -rounded_down(-x);
+}
+
+// A ray prepared for float slab tests that bound its exact slab distances from below (where it
+// enters a box) and above (where it leaves). Per axis, for the face it meets first (near) and
+// last (far): the origin rounded towards the face, so the float difference face - origin is no
+// larger in size than the exact one for the near face and no smaller for the far face, and
+// 1 / direction in floats, made smaller in size by 4 eps for the near face and larger for the
+// far face: that covers the rounding of the difference and the product (eps / 2 each) and of
+// 1 / direction itself. Distances below 0 are never used (the traversal asks for t >= 0 only).
+struct float_slabs {
+    float8 origin_near[3], origin_far[3], inv_near[3], inv_far[3];
+    int near[3], far[3];
+    int octant  = 0;
+    bool usable = true;  // false: a direction or origin the floats cannot bound
+
+    explicit float_slabs(const ray& r) {
+        constexpr real eps = std::numeric_limits<float>::epsilon();
+        for (int axis = 0; axis < 3; ++axis) {
+            const real o = r.origin()[axis], inv = 1 / r.direction()[axis];
+            const float smaller = float(inv * (1 - 4 * eps)), larger = float(inv * (1 + 4 * eps));
+            // A tiny direction component whose inverse overflows float would make a finite
+            // distance infinite; an origin beyond float's range has no float to round to.
+            if (std::isnan(inv) || (std::isfinite(inv) && !std::isfinite(larger)) ||
+                !(std::fabs(o) < real(std::numeric_limits<float>::max() / 2)))
+                usable = false;
+            const bool negative = inv < 0;
+            const float up = rounded_up(o), down = rounded_down(o);
+            origin_near[axis] = (float8{} + (negative ? down : up));
+            origin_far[axis]  = (float8{} + (negative ? up : down));
+            inv_near[axis]    = (float8{} + smaller);
+            inv_far[axis]     = (float8{} + larger);
+            near[axis]        = negative ? 3 + axis : axis;
+            far[axis]         = negative ? axis : 3 + axis;
+            octant |= negative ? 1 << axis : 0;
+        }
+    }
+};
+
+[[gnu::always_inline]] inline unsigned lane_bits(const int8& inside) {
+    const auto lanes = (float8)inside;  // a vector cast keeps the bits
+#if defined(__x86_64__)
+    const float4 low  = __builtin_shufflevector(lanes, lanes, 0, 1, 2, 3);
+    const float4 high = __builtin_shufflevector(lanes, lanes, 4, 5, 6, 7);
+    return unsigned(__builtin_ia32_movmskps(low)) | unsigned(__builtin_ia32_movmskps(high)) << 4;
+#else
+    unsigned bits = 0;
+    for (int k = 0; k < 8; ++k) bits |= unsigned(inside[k] & 1) << k;
+    return bits;
+#endif
+}
+
+// The eight boxes' slab test, bounding the exact one (float_slabs). A NaN distance (0 * inf: a
+// ray in a face's plane) is no constraint, as in aabb::hit. The far bound is padded by float's
+// smallest normal number: a product in the subnormal range is rounded by an absolute amount far
+// below it, which the relative margins do not cover.
+[[gnu::always_inline]] inline unsigned hit_eight(const float8 bounds[6], const float_slabs& r,
+                                                 const float8& t_min_down, const float8& t_max_up,
+                                                 float8& t_enter) {
+    float8 t_near = t_min_down;
+    float8 t_far  = t_max_up;
+    for (int axis = 0; axis < 3; ++axis) {
+        const float8 t0 = (bounds[r.near[axis]] - r.origin_near[axis]) * r.inv_near[axis];
+        const float8 t1 = (bounds[r.far[axis]] - r.origin_far[axis]) * r.inv_far[axis];
+        t_near          = t0 > t_near ? t0 : t_near;
+        t_far           = t1 < t_far ? t1 : t_far;
+    }
+    t_enter = t_near;
+    return lane_bits(t_near <= t_far + (float8{} + std::numeric_limits<float>::min()));
+}
+
+}  // namespace
+
+bool mesh_bvh::packs(const bvh& tree) {
+    const triangle_mesh* first = nullptr;
+    for (const auto& object : tree.objects()) {
+        if (!object || typeid(*object) != typeid(mesh_triangle)) return false;
+        const auto& t = static_cast<const mesh_triangle&>(*object);
+        if (first && &t.mesh() != first) return false;
+        first = &t.mesh();
+    }
+    return first != nullptr;
+}
+
+tree_packer mesh_bvh::packer() {
+    return [](const std::shared_ptr<const bvh>& tree) -> std::shared_ptr<bounded_hittable> {
+        if (!tree || !packs(*tree)) return nullptr;
+        return std::make_shared<mesh_bvh>(tree);
+    };
+}
+
+mesh_bvh::mesh_bvh(std::shared_ptr<const bvh> tree) : binary(std::move(tree)) {
+    if (!binary || !packs(*binary))
+        throw std::invalid_argument("mesh_bvh: a tree of one mesh's triangles is required");
+    mesh = &static_cast<const mesh_triangle&>(*binary->objects()[0]).mesh();
+    triangles.reserve(binary->object_count());
+    root = pack(0);
+}
+
+std::uint32_t mesh_bvh::pack_leaf(const bvh::node& b) {
+    if (b.count > 4) throw std::logic_error("mesh_bvh: a leaf of more than four triangles");
+    const auto first = std::uint32_t(triangles.size());
+    for (std::uint32_t i = b.offset; i < b.offset + b.count; ++i) {
+        const std::uint32_t index =
+            static_cast<const mesh_triangle&>(*binary->objects()[i]).index();
+        triangles.push_back(index);
+        corners.push_back(mesh->triangle(index));
+    }
+    return leaf_bit | first << 2 | (b.count - 1u);
+}
+
+std::uint32_t mesh_bvh::pack(std::uint32_t index) {
+    const std::vector<bvh::node>& tree = binary->nodes();
+    const bvh::node& b                 = tree[index];
+    if (b.count > 0) return pack_leaf(b);
+
+    // The lanes: up to eight nodes of the binary subtree below this one, none inside another, as
+    // chapter 17's wide_bvh::pack chooses four: the interior lane with the largest box gives
+    // way to its two children while there is room. Each keeps its path, which orders the visits.
+    struct step {
+        int side, axis;
+    };
+    struct lane {
+        std::uint32_t binary;
+        std::vector<step> path;
+    };
+    std::vector<lane> lanes = {{index + 1, {{0, b.axis}}}, {b.offset, {{1, b.axis}}}};
+    while (lanes.size() < 8) {
+        int widest       = -1;
+        real widest_area = 0;
+        for (std::size_t k = 0; k < lanes.size(); ++k) {
+            const bvh::node& c = tree[lanes[k].binary];
+            if (c.count == 0 && (widest < 0 || !(c.box.half_area() <= widest_area))) {
+                widest      = int(k);
+                widest_area = c.box.half_area();
+            }
+        }
+        if (widest < 0) break;
+        const lane parent  = lanes[std::size_t(widest)];
+        const bvh::node& c = tree[parent.binary];
+        lane first = parent, second = parent;
+        first.binary  = parent.binary + 1;
+        second.binary = c.offset;
+        first.path.push_back({0, c.axis});
+        second.path.push_back({1, c.axis});
+        lanes[std::size_t(widest)] = first;
+        lanes.insert(lanes.begin() + widest + 1, second);
+    }
+
+    const auto here = std::uint32_t(nodes.size());
+    nodes.push_back({});
+    std::uint32_t child[8] = {};
+    for (std::size_t k = 0; k < lanes.size(); ++k) child[k] = pack(lanes[k].binary);
+
+    node& n = nodes[here];
+    for (int axis = 0; axis < 3; ++axis)
+        for (std::size_t k = 0; k < 8; ++k) {
+            // Unused lanes: an empty box (lower above upper), which every ray misses.
+            float lower = std::numeric_limits<float>::infinity(), upper = -lower;
+            if (k < lanes.size()) {
+                const interval side = tree[lanes[k].binary].box.axis_interval(axis);
+                lower               = rounded_down(side.min);
+                upper               = rounded_up(side.max);
+            }
+            n.bounds[axis][k]     = lower;
+            n.bounds[3 + axis][k] = upper;
+        }
+    for (int k = 0; k < 8; ++k) n.child[k] = child[k];
+    for (int octant = 0; octant < 8; ++octant) {
+        auto rank = [&](std::size_t k) {
+            std::vector<int> word;
+            for (const step& st : lanes[k].path) word.push_back(st.side ^ (octant >> st.axis & 1));
+            return word;
+        };
+        std::array<std::size_t, 8> lane_of{0, 1, 2, 3, 4, 5, 6, 7};
+        std::sort(lane_of.begin(), lane_of.end(), [&](std::size_t x, std::size_t y) {
+            if (x >= lanes.size() || y >= lanes.size()) return x < y;
+            return rank(x) < rank(y);
+        });
+        std::uint32_t order = 0;
+        for (int i = 0; i < 8; ++i) order |= std::uint32_t(lane_of[std::size_t(i)]) << (3 * i);
+        n.order[octant] = order;
+    }
+    return here;
+}
+
+// Up to four triangles as four lanes, each lane intersect_triangle's arithmetic, operation for
+// operation (chapter 18's layer fuses no multiply-add), so each lane's answer is bit for bit
+// the one that triangle gives alone.
+[[gnu::always_inline]] inline bool mesh_bvh::hit_leaf(std::uint32_t leaf, const sheared_ray& sr,
+                                                      interval& ray_t, triangle_hit& nearest,
+                                                      std::uint32_t& nearest_index) const {
+    using real4               = real __attribute__((vector_size(4 * sizeof(real))));
+    const std::uint32_t first = (leaf & ~leaf_bit) >> 2, count = (leaf & 3u) + 1;
+    const point3* p = mesh->data().positions.data();
+    const point3* v0[4];
+    const point3* v1[4];
+    const point3* v2[4];
+    for (std::uint32_t j = 0; j < 4; ++j) {
+        const auto& v = corners[first + (j < count ? j : 0)];
+        v0[j]         = &p[v[0]];
+        v1[j]         = &p[v[1]];
+        v2[j]         = &p[v[2]];
+    }
+    // Each lane's vertex minus the origin, as intersect_triangle's vec3 subtraction, turned as
+    // sheared_ray says (z along the ray's largest direction component). (Written into `out`:
+    // a vector returned by value would change with the processor's vector width.)
+    auto lanes = [&](const point3* const* q, int axis, real4& out) {
+        const real o = sr.origin[axis];
+        out = real4{(*q[0])[axis], (*q[1])[axis], (*q[2])[axis], (*q[3])[axis]} - real4{o, o, o, o};
+    };
+    real4 ax, ay, az, bx, by, bz, cx, cy, cz;
+    lanes(v0, sr.kx, ax), lanes(v0, sr.ky, ay), lanes(v0, sr.kz, az);
+    lanes(v1, sr.kx, bx), lanes(v1, sr.ky, by), lanes(v1, sr.kz, bz);
+    lanes(v2, sr.kx, cx), lanes(v2, sr.ky, cy), lanes(v2, sr.kz, cz);
+    const real4 x0 = ax - sr.sx * az, y0 = ay - sr.sy * az;
+    const real4 x1 = bx - sr.sx * bz, y1 = by - sr.sy * bz;
+    const real4 x2 = cx - sr.sx * cz, y2 = cy - sr.sy * cz;
+    const real4 e0   = x1 * y2 - y1 * x2;
+    const real4 e1   = x2 * y0 - y2 * x0;
+    const real4 e2   = x0 * y1 - y0 * x1;
+    const real4 zero = {0, 0, 0, 0};
+    const auto mixed =
+        ((e0 < zero) | (e1 < zero) | (e2 < zero)) & ((e0 > zero) | (e1 > zero) | (e2 > zero));
+    const real4 det      = e0 + e1 + e2;
+    const real4 scaled_t = e0 * (sr.sz * az) + e1 * (sr.sz * bz) + e2 * (sr.sz * cz);
+    const real4 inv_det  = 1 / det;
+    const real4 t        = scaled_t * inv_det;
+    const auto ok        = ~mixed & (det != zero) & (t > ray_t.min) & (t < ray_t.max);
+    int chosen           = -1;
+    for (std::uint32_t j = 0; j < count; ++j)
+        if (ok[j] && t[j] < ray_t.max) {
+            ray_t.max = t[j];
+            chosen    = int(j);
+        }
+    if (chosen < 0) return false;
+    nearest       = {t[chosen], e0[chosen] * inv_det[chosen], e1[chosen] * inv_det[chosen],
+                     e2[chosen] * inv_det[chosen]};
+    nearest_index = triangles[first + std::uint32_t(chosen)];
+    return true;
+}
+
+// The record mesh_triangle::hit fills, for the nearest hit, once.
+void mesh_bvh::record(std::uint32_t index, const triangle_hit& found, const ray& r,
+                      hit_record& rec) const {
+    const point3* p = mesh->data().positions.data();
+    const auto& v   = mesh->triangle(index);
+    record_triangle_hit(found, p[v[0]], p[v[1]], p[v[2]], r, rec);
+    mesh->shade(index, found, r, rec);
+    rec.mat    = mesh->surface();
+    rec.object = &mesh->faces()[index];
+}
+
+#if defined(__x86_64__)
+#define RT_ALSO_FOR_AVX2 [[gnu::target_clones("avx2", "default")]]
+#else
+#define RT_ALSO_FOR_AVX2
+#endif
+RT_ALSO_FOR_AVX2 bool mesh_bvh::closest_hit(const ray& r, interval ray_t, hit_record& rec) const {
+    const sheared_ray sr(r);
+    triangle_hit nearest;
+    std::uint32_t nearest_index = 0;
+    if (root & leaf_bit) {
+        if (!hit_leaf(root, sr, ray_t, nearest, nearest_index)) return false;
+        record(nearest_index, nearest, r, rec);
+        return true;
+    }
+    const float_slabs fs(r);
+    if (!fs.usable || !(ray_t.min >= 0)) return binary->hit(r, ray_t, rec);
+
+    struct pending {
+        std::uint32_t child;
+        float t_enter;
+    };
+    pending stack[7 * bvh::max_depth + 1];
+    int top               = 0;
+    std::uint32_t current = root;
+    bool hit_anything     = false;
+    const float8 t_min    = (float8{} + rounded_down(ray_t.min));
+    float8 t_max          = (float8{} + rounded_up(ray_t.max));
+    while (true) {
+        if (current & leaf_bit) {
+            if (hit_leaf(current, sr, ray_t, nearest, nearest_index)) {
+                hit_anything = true;
+                t_max        = (float8{} + rounded_up(ray_t.max));
+            }
+        } else {
+            const node& n = nodes[current];
+            float8 t_enter;
+            const unsigned hits = hit_eight(n.bounds, fs, t_min, t_max, t_enter);
+            if ((hits & (hits - 1)) == 0 && hits != 0) {
+                current = n.child[std::countr_zero(hits)];
+                continue;
+            }
+            if (hits != 0) {
+                const std::uint32_t order = n.order[fs.octant];
+                for (int i = 7; i >= 0; --i) {
+                    const unsigned k = order >> (3 * i) & 7u;
+                    stack[top]       = {n.child[k], t_enter[k]};
+                    top += int(hits >> k & 1u);
+                }
+                current = stack[--top].child;
+                continue;
+            }
+        }
+        do {
+            if (top == 0) {
+                if (hit_anything) record(nearest_index, nearest, r, rec);
+                return hit_anything;
+            }
+            --top;
+        } while (real(stack[top].t_enter) > ray_t.max);
+        current = stack[top].child;
+    }
+}
+
+bool mesh_bvh::hit(const ray& r, interval ray_t, hit_record& rec) const {
+    return closest_hit(r, ray_t, rec);
+}
+
+}  // namespace rt

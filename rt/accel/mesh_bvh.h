@@ -1,0 +1,81 @@
+// A mesh's own tree, packed for triangles: chapter 07's BVH over one mesh's triangles, with up to
+// eight of its boxes side by side in a node, kept in single precision, and the triangles of a
+// leaf tested four at a time. Chapter 18.
+// - Eight boxes in floats take 256 bytes with their children and visiting orders, where chapter
+//   17's four in doubles take 224: half the node visits of a four-wide tree, each loading about
+//   as much. A box is rounded outwards to floats, and the ray's slab distances are bounded below
+//   and above (the origin rounded towards each face, the distances widened by their rounding),
+//   so a box is missed only where the ray misses it in exact arithmetic: every leaf chapter 07's
+//   tree would test is tested, in the same order (the binary tree's, nearer child first at each
+//   of its levels), and the nearest hit is the same triangle at the same t, ties included.
+// - A leaf's triangles (one to four) are tested as four lanes of doubles, each lane the very
+//   arithmetic of intersect_triangle, so each triangle's answer is the one it gives alone; the
+//   nearest is taken in leaf order, the first of equal distances winning, as the loop does.
+// - A ray the float slabs cannot bound (a direction component below float's range, an origin
+//   beyond it) is traced through the binary tree itself.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "rt/accel/bvh.h"
+#include "rt/accel/fast_traversal.h"
+#include "rt/geometry/triangle_mesh.h"
+
+namespace rt {
+
+class mesh_bvh final : public bounded_hittable {
+  public:
+    // Packs `tree`, a BVH whose objects are all triangles of one mesh (as mesh_object() builds
+    // it); throws std::invalid_argument for any other. Keeps the tree (and so the mesh) alive.
+    explicit mesh_bvh(std::shared_ptr<const bvh> tree);
+
+    // Whether `tree` holds only triangles of one mesh, so that it can be packed so.
+    static bool packs(const bvh& tree);
+    // What with_fast_traversal() takes to pack each mesh's tree so (and leave other trees).
+    static tree_packer packer();
+
+    bool hit(const ray& r, interval ray_t, hit_record& rec) const override;
+    aabb bounding_box() const override { return binary->bounding_box(); }
+    // The binary tree's (a shadow ray needs no nearest hit, and meshes seldom cast them here).
+    real transmittance(const ray& r, interval ray_t) const override {
+        return binary->transmittance(r, ray_t);
+    }
+    void visit_parts(part_visitor& visitor) const override { binary->visit_parts(visitor); }
+
+    std::size_t node_count() const { return nodes.size(); }
+
+  private:
+    using float8 = float __attribute__((vector_size(32)));
+
+    struct alignas(32) node {
+        float8 bounds[6];  // the children's box bounds: lower x, y, z, then upper x, y, z
+        // A node's index, or leaf_bit | (first triangle << 2) | (triangles - 1).
+        std::uint32_t child[8];
+        // Per octant of ray directions (bit k: the ray runs towards smaller coordinates on axis
+        // k), the lane of the i-th visit in bits 3i to 3i + 2.
+        std::uint32_t order[8];
+    };
+    static constexpr std::uint32_t leaf_bit = 0x80000000u;
+
+    std::uint32_t pack(std::uint32_t index);
+    std::uint32_t pack_leaf(const bvh::node& b);
+    bool hit_leaf(std::uint32_t leaf, const sheared_ray& sr, interval& ray_t, triangle_hit& nearest,
+                  std::uint32_t& nearest_index) const;
+    void record(std::uint32_t index, const triangle_hit& found, const ray& r,
+                hit_record& rec) const;
+    bool closest_hit(const ray& r, interval ray_t, hit_record& rec) const;
+
+    std::shared_ptr<const bvh> binary;
+    const triangle_mesh* mesh = nullptr;
+    std::uint32_t root        = leaf_bit;
+    std::vector<node> nodes;
+    // Leaf by leaf: the mesh's triangle indices, and their vertex indices (one lookup less for
+    // each triangle tested).
+    std::vector<std::uint32_t> triangles;
+    std::vector<std::array<std::uint32_t, 3>> corners;
+};
+
+}  // namespace rt
