@@ -133,26 +133,74 @@ mesh_bvh::mesh_bvh(std::shared_ptr<const bvh> tree) : binary(std::move(tree)) {
     if (!binary || !packs(*binary))
         throw std::invalid_argument("mesh_bvh: a tree of one mesh's triangles is required");
     mesh = &static_cast<const mesh_triangle&>(*binary->objects()[0]).mesh();
+    // The triangles under each binary node (a node's children come after it).
+    const std::vector<bvh::node>& nodes_of = binary->nodes();
+    below.resize(nodes_of.size());
+    for (std::size_t i = nodes_of.size(); i-- > 0;) {
+        const bvh::node& b = nodes_of[i];
+        below[i]           = b.count > 0 ? b.count : below[i + 1] + below[b.offset];
+    }
     triangles.reserve(binary->object_count());
     root = pack(0);
 }
 
-std::uint32_t mesh_bvh::pack_leaf(const bvh::node& b) {
-    if (b.count > 4) throw std::logic_error("mesh_bvh: a leaf of more than four triangles");
-    const auto first = std::uint32_t(triangles.size());
-    for (std::uint32_t i = b.offset; i < b.offset + b.count; ++i) {
-        const std::uint32_t index =
-            static_cast<const mesh_triangle&>(*binary->objects()[i]).index();
-        triangles.push_back(index);
-        corners.push_back(mesh->triangle(index));
+// A binary subtree of up to four triangles: one leaf, tested at once. Its triangles are kept in
+// the order the binary tree lists them, and, per octant of ray directions, the order in which
+// it would visit them (each one's path from here, with each side flipped where the ray runs
+// towards smaller coordinates on that level's split axis, as the wide nodes' order): of several
+// at the same nearest t, the first visited wins, as in the binary tree.
+std::uint32_t mesh_bvh::pack_leaf(std::uint32_t index) {
+    const std::vector<bvh::node>& tree = binary->nodes();
+    struct item {
+        std::uint32_t triangle;
+        std::vector<std::pair<int, int>> path;  // (side, axis) per binary level
+    };
+    std::vector<item> items;
+    auto collect = [&](auto&& self, std::uint32_t i, std::vector<std::pair<int, int>> path) {
+        const bvh::node& b = tree[i];
+        if (b.count > 0) {
+            for (std::uint32_t k = b.offset; k < b.offset + b.count; ++k)
+                items.push_back(
+                    {static_cast<const mesh_triangle&>(*binary->objects()[k]).index(), path});
+            return;
+        }
+        auto first = path, second = path;
+        first.emplace_back(0, b.axis);
+        second.emplace_back(1, b.axis);
+        self(self, i + 1, first);
+        self(self, b.offset, second);
+    };
+    collect(collect, index, {});
+    if (items.empty() || items.size() > 4)
+        throw std::logic_error("mesh_bvh: a leaf of none or more than four triangles");
+    const auto first     = std::uint32_t(triangles.size());
+    std::uint64_t orders = 0;
+    for (int octant = 0; octant < 8; ++octant) {
+        auto rank = [&](std::size_t k) {
+            std::vector<int> word;
+            for (const auto& [side, axis] : items[k].path)
+                word.push_back(side ^ (octant >> axis & 1));
+            return word;
+        };
+        std::array<std::size_t, 4> lane_of{0, 1, 2, 3};
+        // Stable: the triangles of one binary leaf share a path, and are tried in its order.
+        std::stable_sort(lane_of.begin(), lane_of.begin() + std::ptrdiff_t(items.size()),
+                         [&](std::size_t x, std::size_t y) { return rank(x) < rank(y); });
+        for (std::size_t i = 0; i < items.size(); ++i)
+            orders |= std::uint64_t(lane_of[i]) << (8 * octant + 2 * int(i));
     }
-    return leaf_bit | first << 2 | (b.count - 1u);
+    for (const item& it : items) {
+        triangles.push_back(it.triangle);
+        corners.push_back(mesh->triangle(it.triangle));
+        visit_orders.push_back(orders);
+    }
+    return leaf_bit | first << 2 | std::uint32_t(items.size() - 1);
 }
 
 std::uint32_t mesh_bvh::pack(std::uint32_t index) {
     const std::vector<bvh::node>& tree = binary->nodes();
     const bvh::node& b                 = tree[index];
-    if (b.count > 0) return pack_leaf(b);
+    if (below[index] <= 4) return pack_leaf(index);
 
     // The lanes: up to eight nodes of the binary subtree below this one, none inside another, as
     // chapter 17's wide_bvh::pack chooses four: the interior lane with the largest box gives
@@ -170,7 +218,7 @@ std::uint32_t mesh_bvh::pack(std::uint32_t index) {
         real widest_area = 0;
         for (std::size_t k = 0; k < lanes.size(); ++k) {
             const bvh::node& c = tree[lanes[k].binary];
-            if (c.count == 0 && (widest < 0 || !(c.box.half_area() <= widest_area))) {
+            if (below[lanes[k].binary] > 4 && (widest < 0 || !(c.box.half_area() <= widest_area))) {
                 widest      = int(k);
                 widest_area = c.box.half_area();
             }
@@ -227,8 +275,9 @@ std::uint32_t mesh_bvh::pack(std::uint32_t index) {
 // Up to four triangles as four lanes, each lane intersect_triangle's arithmetic, operation for
 // operation (chapter 18's layer fuses no multiply-add), so each lane's answer is bit for bit
 // the one that triangle gives alone.
-[[gnu::always_inline]] inline bool mesh_bvh::hit_leaf(std::uint32_t leaf, const sheared_ray& sr,
-                                                      interval& ray_t, triangle_hit& nearest,
+[[gnu::always_inline]] inline bool mesh_bvh::hit_leaf(std::uint32_t leaf, int octant,
+                                                      const sheared_ray& sr, interval& ray_t,
+                                                      triangle_hit& nearest,
                                                       std::uint32_t& nearest_index) const {
     using real4               = real __attribute__((vector_size(4 * sizeof(real))));
     const std::uint32_t first = (leaf & ~leaf_bit) >> 2, count = (leaf & 3u) + 1;
@@ -267,12 +316,16 @@ std::uint32_t mesh_bvh::pack(std::uint32_t index) {
     const real4 inv_det  = 1 / det;
     const real4 t        = scaled_t * inv_det;
     const auto ok        = ~mixed & (det != zero) & (t > ray_t.min) & (t < ray_t.max);
-    int chosen           = -1;
-    for (std::uint32_t j = 0; j < count; ++j)
+    // In the binary tree's visiting order for this ray: of equal distances, the first wins.
+    const auto order = unsigned(visit_orders[first] >> (8 * octant));
+    int chosen       = -1;
+    for (std::uint32_t i = 0; i < count; ++i) {
+        const unsigned j = order >> (2 * i) & 3u;
         if (ok[j] && t[j] < ray_t.max) {
             ray_t.max = t[j];
             chosen    = int(j);
         }
+    }
     if (chosen < 0) return false;
     nearest       = {t[chosen], e0[chosen] * inv_det[chosen], e1[chosen] * inv_det[chosen],
                      e2[chosen] * inv_det[chosen]};
@@ -301,7 +354,9 @@ RT_ALSO_FOR_AVX2 bool mesh_bvh::closest_hit(const ray& r, interval ray_t, hit_re
     triangle_hit nearest;
     std::uint32_t nearest_index = 0;
     if (root & leaf_bit) {
-        if (!hit_leaf(root, sr, ray_t, nearest, nearest_index)) return false;
+        int octant = 0;
+        for (int axis = 0; axis < 3; ++axis) octant |= 1 / r.direction()[axis] < 0 ? 1 << axis : 0;
+        if (!hit_leaf(root, octant, sr, ray_t, nearest, nearest_index)) return false;
         record(nearest_index, nearest, r, rec);
         return true;
     }
@@ -320,7 +375,7 @@ RT_ALSO_FOR_AVX2 bool mesh_bvh::closest_hit(const ray& r, interval ray_t, hit_re
     float8 t_max          = (float8{} + rounded_up(ray_t.max));
     while (true) {
         if (current & leaf_bit) {
-            if (hit_leaf(current, sr, ray_t, nearest, nearest_index)) {
+            if (hit_leaf(current, fs.octant, sr, ray_t, nearest, nearest_index)) {
                 hit_anything = true;
                 t_max        = (float8{} + rounded_up(ray_t.max));
             }

@@ -65,9 +65,9 @@ class mesh_bvh final : public bounded_hittable {
     static constexpr std::uint32_t leaf_bit = 0x80000000u;
 
     std::uint32_t pack(std::uint32_t index);
-    std::uint32_t pack_leaf(const bvh::node& b);
-    bool hit_leaf(std::uint32_t leaf, const sheared_ray& sr, interval& ray_t, triangle_hit& nearest,
-                  std::uint32_t& nearest_index) const;
+    std::uint32_t pack_leaf(std::uint32_t index);
+    bool hit_leaf(std::uint32_t leaf, int octant, const sheared_ray& sr, interval& ray_t,
+                  triangle_hit& nearest, std::uint32_t& nearest_index) const;
     void record(std::uint32_t index, const triangle_hit& found, const ray& r,
                 hit_record& rec) const;
     bool closest_hit(const ray& r, interval ray_t, hit_record& rec) const;
@@ -80,6 +80,10 @@ class mesh_bvh final : public bounded_hittable {
     // each triangle tested).
     std::vector<std::uint32_t> triangles;
     std::vector<std::array<std::uint32_t, 3>> corners;
+    // Per triangle, its leaf's visiting orders (8 bits per octant: the lane of the i-th visit in
+    // bits 2i and 2i + 1); read at the leaf's first triangle.
+    std::vector<std::uint64_t> visit_orders;
+    std::vector<std::uint32_t> below;  // per binary node, the triangles under it
 };
 
 }  // namespace rt
