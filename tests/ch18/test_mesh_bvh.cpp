@@ -1,10 +1,12 @@
 // Tests for mesh_bvh.h (chapter 18): a mesh's tree packed eight boxes wide in floats, with its
-// leaves' triangles tested four at a time, answers every ray exactly as chapter 07's tree over
-// the same triangles does: hit or miss, the same triangle at the same t to the bit, the same
-// record, on shared edges and vertices (where two triangles may report the same t and the first
-// in the tree's order must win), on rays in a box's face plane or along an axis, from far away,
-// with a direction too small for floats, and inside intervals that end before a hit. It packs
-// only trees of one mesh's triangles, and the fast traversal uses it for exactly those.
+// leaves' triangles tested four at a time, finds every ray's nearest hit as a loop over every
+// triangle does, and answers exactly as chapter 07's tree over the same triangles wherever that
+// finds the same hit (it can lose one within rounding of the interval's end): the same triangle
+// at the same t to the bit, the same record, on shared edges and vertices (where two triangles may
+// report the same t and the first in the tree's order must win), on rays in a box's face plane or
+// along an axis, from far away, with a direction too small for floats, and inside intervals that
+// end before a hit. It packs only trees of one mesh's triangles, and the fast traversal uses it for
+// exactly those.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
@@ -139,8 +141,8 @@ void rays_at_features(const rt::triangle_mesh& mesh, const point3& center, real 
 }  // namespace
 
 TEST_CASE(
-    "mesh_bvh: on an icosphere, a tilted grid and a box, every ray aimed at a vertex, an edge "
-    "or a face, or along an axis, gets the binary tree's record, bit for bit",
+    "mesh_bvh: on an icosphere, grids and a box, rays aimed at vertices, edges and faces, or "
+    "along an axis, get the loop's nearest hit and the binary tree's record where it finds it",
     "[ch18]") {
     rt::pcg32 rng(20251203, 1);
     comparison c;
@@ -160,8 +162,8 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "mesh_bvh: on a soup of 3000 random triangles of every size, random rays get the binary "
-    "tree's record, bit for bit",
+    "mesh_bvh: on a soup of 3000 random triangles of every size, random rays get the loop's "
+    "nearest hit and the binary tree's record where it finds it",
     "[ch18]") {
     rt::pcg32 rng(20251203, 2);
     rt::mesh_data data;
@@ -191,7 +193,7 @@ TEST_CASE(
 
 TEST_CASE(
     "mesh_bvh: rays from far away, with a direction component too small for floats, or from "
-    "an origin beyond them, get the binary tree's record",
+    "an origin beyond them, get the loop's nearest hit and the binary tree's record",
     "[ch18]") {
     rt::pcg32 rng(20251203, 3);
     auto mesh = mesh_of(rt_test::icosphere(point3(0, 0, 0), 1, 2));
@@ -222,8 +224,8 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "mesh_bvh: meshes of one to four triangles (the tree one leaf) and of five to nine get the "
-    "binary tree's records",
+    "mesh_bvh: meshes of one to four triangles (the tree one leaf) and of five to nine give "
+    "the loop's nearest hits and the binary tree's records",
     "[ch18]") {
     rt::pcg32 rng(20251203, 4);
     const rt::mesh_data grid = rt_test::quad_grid(point3(-1, -1, 0), vec3(0.5, 0, 0.1),
