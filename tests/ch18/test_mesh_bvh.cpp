@@ -141,7 +141,8 @@ void rays_at_features(const rt::triangle_mesh& mesh, const point3& center, real 
 }  // namespace
 
 TEST_CASE(
-    "mesh_bvh: on an icosphere, grids and a box, rays aimed at vertices, edges and faces, or "
+    "mesh_bvh: on icospheres near and far, grids and a box, rays aimed at vertices, edges and "
+    "faces, or "
     "along an axis, get the loop's nearest hit and the binary tree's record where it finds it",
     "[ch18]") {
     rt::pcg32 rng(20251203, 1);
@@ -157,6 +158,10 @@ TEST_CASE(
         point3(0, 0, 0.1), 3, rng, c);
     rays_at_features(*mesh_of(rt_test::box_mesh(point3(-0.3, 0.1, 1.0 / 3), point3(0.7, 2, 1))),
                      point3(0.2, 1, 0.6), 3, rng, c);
+    // Far from the world's origin, seen from near: a float box rounded to the nearest float there
+    // (half a float's step at 1000, 3e-5) is off by far more than the slab distances' margins.
+    rays_at_features(*mesh_of(rt_test::icosphere(point3(1000.1, -999.7, 1000.3), 1.3, 3)),
+                     point3(1000.1, -999.7, 1000.3), 4, rng, c);
     require_same(c);
     CHECK(c.hits > c.rays / 3);
 }
