@@ -1,10 +1,10 @@
 // The mesh anchor: triangle meshes of 10^3 to 10^6 and more triangles (the Stanford bunny, and
 // the bunny subdivided 1 to 5 times), the same rays through our BVH (chapter 18's mesh object,
 // chapter 07's tree over the triangles, packed by mesh_bvh as the fast traversal packs it) and
-// through Embree 3's own triangle
-// geometry (rtcIntersect1, one ray at a time, one thread, closest hit). Per mesh: the build's
-// seconds (of this thread), the bytes per triangle the built structure holds, and the rays per
-// second of each.
+// through Embree 3's own triangle geometry (rtcIntersect1, one ray at a time, one thread, closest
+// hit). Per mesh: the build's seconds (of this thread), the bytes per triangle the built
+// structure holds, and the rays per second of each; and the mesh as one light (mesh_light):
+// nanoseconds per sample and per density, from the rays' origins.
 //   mesh_anchor --out FILE.json [--rays N] [--repeat N] [--levels N] [--note TEXT]
 // Rays: a 512 x 512 camera looking at the model from the front and above, and from each of
 // their hits a cosine-weighted bounce about the geometric normal; rounded to float, so both
@@ -34,6 +34,8 @@
 #include "rt/core/onb.h"
 #include "rt/core/rng.h"
 #include "rt/geometry/triangle_mesh.h"
+#include "rt/lights/mesh_light.h"
+#include "rt/materials/diffuse_light.h"
 #include "rt/materials/lambertian.h"
 #include "rt/models/obj_model.h"
 #include "rt/samplers/sampling.h"
@@ -87,6 +89,10 @@ struct mesh_result {
     double ours_bytes = 0, embree_bytes = 0;  // per triangle
     std::vector<double> ours_seconds, embree_seconds;
     std::size_t rays = 0, hits_ours = 0, hits_embree = 0, same_triangle = 0;
+    // The mesh as a light (chapter 18's mesh_light): nanoseconds per sample drawn from a point,
+    // per density of a direction (pdf: the directions' crossings of the mesh), and per density
+    // of a hit on it (pdf_at: from the hit's triangle alone).
+    double light_sample_ns = 0, light_pdf_ns = 0, light_pdf_at_ns = 0;
 };
 
 std::atomic<std::int64_t> embree_held{0};
@@ -163,6 +169,42 @@ std::vector<rt::ray> rays_at(const rt::hittable& ours, const rt::aabb& box, std:
     return rays;
 }
 
+// The mesh as one light, seen from the rays' origins: what chapter 14's light set asks of it per
+// sample and per density, which must not grow with the triangles (no loop over them).
+void measure_light(const rt::mesh_data& data, const std::vector<rt::ray>& rays, int repeat,
+                   mesh_result& out) {
+    auto glow = std::make_shared<rt::diffuse_light>(rt::color(1, 1, 1));
+    const rt::triangle_mesh mesh(data, glow);
+    const rt::mesh_light light(mesh);
+    const std::size_t n = std::min<std::size_t>(rays.size(), 100000);
+    rt::pcg32 rng(2025, 7);
+    std::vector<rt::light_sample> samples(n);
+    std::vector<bool> drawn(n);
+    std::vector<double> sample_s, pdf_s, pdf_at_s;
+    double sink = 0;
+    for (int k = 0; k < repeat; ++k) {
+        double start = thread_seconds();
+        for (std::size_t i = 0; i < n; ++i)
+            drawn[i] = light.sample(rays[i].origin(), {rng.uniform(), rng.uniform()}, samples[i]);
+        sample_s.push_back(thread_seconds() - start);
+        start = thread_seconds();
+        for (std::size_t i = 0; i < n; ++i)
+            if (drawn[i]) sink += light.pdf(rays[i].origin(), samples[i].wi);
+        pdf_s.push_back(thread_seconds() - start);
+        start = thread_seconds();
+        for (std::size_t i = 0; i < n; ++i)
+            if (drawn[i])
+                sink += light.pdf_at(rays[i].origin(), samples[i].wi, samples[i].on_light);
+        pdf_at_s.push_back(thread_seconds() - start);
+    }
+    const auto drawn_count =
+        double(std::max<std::ptrdiff_t>(1, std::count(drawn.begin(), drawn.end(), true)));
+    out.light_sample_ns = 1e9 * median(sample_s) / double(n);
+    out.light_pdf_ns    = 1e9 * median(pdf_s) / drawn_count;
+    out.light_pdf_at_ns = 1e9 * median(pdf_at_s) / drawn_count;
+    if (!(sink > 0)) throw std::runtime_error("the mesh light gave no density");
+}
+
 mesh_result measure(const rt::mesh_data& data, std::size_t ray_count, int repeat) {
     mesh_result out;
     out.triangles = data.triangles.size();
@@ -234,6 +276,7 @@ mesh_result measure(const rt::mesh_data& data, std::size_t ray_count, int repeat
         out.hits_embree += embree_triangle[i] >= 0;
         out.same_triangle += ours_triangle[i] >= 0 && ours_triangle[i] == embree_triangle[i];
     }
+    measure_light(data, rays, repeat, out);
     return out;
 }
 
@@ -267,7 +310,9 @@ int main(int argc, char** argv) {
         std::cout << std::setw(10) << "triangles" << std::setw(12) << "build ours" << std::setw(14)
                   << "build Embree" << std::setw(12) << "B/tri ours" << std::setw(14)
                   << "B/tri Embree" << std::setw(11) << "ours M/s" << std::setw(13) << "Embree M/s"
-                  << std::setw(13) << "ours/Embree" << std::setw(14) << "same triangle" << '\n';
+                  << std::setw(13) << "ours/Embree" << std::setw(14) << "same triangle"
+                  << std::setw(16) << "light sample ns" << std::setw(13) << "light pdf ns"
+                  << std::setw(16) << "light pdf_at ns" << '\n';
         for (int level = 0; level <= levels; ++level) {
             if (level > 0) mesh = subdivided(mesh);
             const mesh_result r = measure(mesh, rays, repeat);
@@ -280,7 +325,8 @@ int main(int argc, char** argv) {
                       << std::setw(13) << embree / 1e6 << std::setprecision(3) << std::setw(13)
                       << ours / embree << std::setw(14)
                       << double(r.same_triangle) / double(std::max<std::size_t>(1, r.hits_embree))
-                      << std::endl;
+                      << std::setprecision(0) << std::setw(16) << r.light_sample_ns << std::setw(13)
+                      << r.light_pdf_ns << std::setw(16) << r.light_pdf_at_ns << std::endl;
             results.push_back(r);
         }
         std::ofstream json(out);
@@ -299,7 +345,10 @@ int main(int argc, char** argv) {
                  << ", \"ours_rays_per_second\": " << double(r.rays) / median(r.ours_seconds)
                  << ", \"embree_rays_per_second\": " << double(r.rays) / median(r.embree_seconds)
                  << ", \"hits_ours\": " << r.hits_ours << ", \"hits_embree\": " << r.hits_embree
-                 << ", \"same_triangle\": " << r.same_triangle << "}"
+                 << ", \"same_triangle\": " << r.same_triangle
+                 << ", \"light_sample_ns\": " << r.light_sample_ns
+                 << ", \"light_pdf_ns\": " << r.light_pdf_ns
+                 << ", \"light_pdf_at_ns\": " << r.light_pdf_at_ns << "}"
                  << (k + 1 < results.size() ? "," : "") << "\n";
         }
         json << "  ]\n}\n";

@@ -33,7 +33,7 @@ mesh_light::mesh_light(const triangle_mesh& m) : mesh(&m) {
         cumulative.push_back(sum);
     }
     total_area = real(sum);
-    tree       = mesh_tree(m);
+    tree       = std::make_shared<mesh_bvh>(mesh_tree(m));
 }
 
 std::size_t mesh_light::choose(real& u) const {

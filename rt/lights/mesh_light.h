@@ -14,7 +14,7 @@
 #include <memory>
 #include <vector>
 
-#include "rt/accel/bvh.h"
+#include "rt/accel/mesh_bvh.h"
 #include "rt/geometry/triangle_mesh.h"
 #include "rt/lights/light.h"
 
@@ -39,7 +39,9 @@ class mesh_light : public light {
     const triangle_mesh* mesh;
     std::vector<double> cumulative;  // area of triangles 0..i, summed in double
     real total_area = 0;
-    std::shared_ptr<bvh> tree;  // the mesh's triangles, for pdf(): which one a direction hits
+    // The mesh's triangles, packed as the fast traversal packs a mesh (the same hits as chapter
+    // 07's tree), for pdf(): which ones a direction crosses.
+    std::shared_ptr<mesh_bvh> tree;
 };
 
 }  // namespace rt
