@@ -311,11 +311,14 @@ std::uint32_t mesh_bvh::pack(std::uint32_t index) {
     const real4 zero = {0, 0, 0, 0};
     const auto mixed =
         ((e0 < zero) | (e1 < zero) | (e2 < zero)) & ((e0 > zero) | (e1 > zero) | (e2 > zero));
-    const real4 det      = e0 + e1 + e2;
+    const real4 det = e0 + e1 + e2;
+    // Most leaves are passed by: no lane's edges let the ray through, and no division is needed.
+    const auto through = ~mixed & (det != zero);
+    if (!(through[0] | through[1] | through[2] | through[3])) return false;
     const real4 scaled_t = e0 * (sr.sz * az) + e1 * (sr.sz * bz) + e2 * (sr.sz * cz);
     const real4 inv_det  = 1 / det;
     const real4 t        = scaled_t * inv_det;
-    const auto ok        = ~mixed & (det != zero) & (t > ray_t.min) & (t < ray_t.max);
+    const auto ok        = through & (t > ray_t.min) & (t < ray_t.max);
     // In the binary tree's visiting order for this ray: of equal distances, the first wins.
     const auto order = unsigned(visit_orders[first] >> (8 * octant));
     int chosen       = -1;
