@@ -11,8 +11,8 @@
 //   at the same t, ties included. One difference, the other way: chapter 07's box test widens
 //   where a ray leaves a box but not where it enters, so where a ray grazes a box (it ends on a
 //   triangle, or passes through a vertex on the box's face) it can lose a hit, or of two at the
-//   same t the one it visits first (3 of 94,752 rays aimed at vertices, edges and faces in
-//   tests/ch18/test_mesh_bvh.cpp; 6 of 106,752 in float); here it is found, as every triangle
+//   same t the one it visits first (3 of 75,552 rays aimed at vertices, edges and faces in
+//   tests/ch18/test_mesh_bvh.cpp; 6 of 87,552 in float); here it is found, as every triangle
 //   asked alone finds it.
 // - A leaf's triangles (one to four) are tested as four lanes of doubles, each lane the very
 //   arithmetic of intersect_triangle, so each triangle's answer is the one it gives alone; the
