@@ -17,6 +17,7 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <ostream>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -29,6 +30,24 @@
 #include "rt/samplers/independent_sampler.h"
 
 namespace rt_test {
+
+// A property checked over many cases: how many were tried, how many failed, and the first
+// failure's description, for one CHECK at the end that says how many failed and how.
+struct tally {
+    long long cases    = 0;
+    long long failures = 0;
+    std::string first;
+
+    void fail(const std::string& what) {
+        if (failures++ == 0) first = what;
+    }
+};
+
+inline std::ostream& operator<<(std::ostream& out, const tally& t) {
+    out << t.failures << " of " << t.cases;
+    if (t.failures > 0) out << " (first: " << t.first << ")";
+    return out;
+}
 
 // A real uniform in [lo, hi): one draw, the building block of the random cases.
 inline rt::real uniform(rt::pcg32& rng, rt::real lo, rt::real hi) {

@@ -34,22 +34,7 @@ const rt::interval forward(0, rt::infinity);
 using rt_test::log_uniform, rt_test::random_in_cube, rt_test::random_in_hemisphere,
     rt_test::random_tangent, rt_test::random_unit, rt_test::uniform;
 
-// Counts of failures, and the first one in words for the failure message.
-struct tally {
-    long long cases    = 0;
-    long long failures = 0;
-    std::string first;
-
-    void fail(const std::string& what) {
-        if (failures++ == 0) first = what;
-    }
-};
-
-std::ostream& operator<<(std::ostream& out, const tally& t) {
-    out << t.failures << " of " << t.cases;
-    if (t.failures > 0) out << " (first: " << t.first << ")";
-    return out;
-}
+using rt_test::tally;
 
 // The scales a precision can take: double the full range (radii or edges 1e-4..1e4, centers or
 // corners up to 1e4 sizes or 1e3 away), float its own (sizes 1e-2..1e2, up to 1e2 sizes or 1e2

@@ -51,22 +51,7 @@ constexpr real min_shading_cos = real(0.2);
 // Rounding slack on a unit vector's length and on cosines.
 constexpr real tiny = 16 * eps;
 
-// Counts of failures, and the first one in words for the failure message.
-struct tally {
-    long long cases    = 0;
-    long long failures = 0;
-    std::string first;
-
-    void fail(const std::string& what) {
-        if (failures++ == 0) first = what;
-    }
-};
-
-std::ostream& operator<<(std::ostream& out, const tally& t) {
-    out << t.failures << " of " << t.cases;
-    if (t.failures > 0) out << " (first: " << t.first << ")";
-    return out;
-}
+using rt_test::tally;
 
 // A triangle near the origin, edges 0.5..2 long and not a sliver.
 std::array<point3, 3> random_triangle(rt::pcg32& rng) {

@@ -35,22 +35,7 @@ constexpr bool is_double = std::numeric_limits<real>::digits >= 53;
 const rt::interval forward(0, rt::infinity);
 const real not_a_number = std::numeric_limits<real>::quiet_NaN();
 
-// Counts of failures, and the first one in words for the failure message.
-struct tally {
-    long long cases    = 0;
-    long long failures = 0;
-    std::string first;
-
-    void fail(const std::string& what) {
-        if (failures++ == 0) first = what;
-    }
-};
-
-std::ostream& operator<<(std::ostream& out, const tally& t) {
-    out << t.failures << " of " << t.cases;
-    if (t.failures > 0) out << " (first: " << t.first << ")";
-    return out;
-}
+using rt_test::tally;
 
 // The triangle of the exact cases: in the plane z = 2, legs of 4 along x and y from (1, 1, 2),
 // so cross(p1 - p0, p2 - p0) = (0, 0, 16), twice its area, and every weight of a point with
