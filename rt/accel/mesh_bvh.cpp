@@ -109,6 +109,31 @@ struct float_slabs {
     return lane_bits(t_near <= t_far + (float8{} + std::numeric_limits<float>::min()));
 }
 
+// One step down the binary tree: to the node's first (0) or second (1) child, and the node's
+// split axis.
+struct step {
+    int side, axis;
+};
+using path = std::vector<step>;
+
+// The order in which the binary tree visits the subtrees these paths lead to (from one node),
+// for rays of an octant (bit k: the ray runs towards smaller coordinates on axis k): at each
+// level the first child first, unless the ray runs the other way on that level's split axis. So
+// a subtree's rank is its path with each side flipped so, read as a word. Entry i is the index
+// of the i-th visited; equal paths (triangles of one binary leaf) keep their given order.
+std::vector<std::size_t> visiting_order(const std::vector<path>& paths, int octant) {
+    auto word = [&](std::size_t k) {
+        std::vector<int> w;
+        for (const step& st : paths[k]) w.push_back(st.side ^ (octant >> st.axis & 1));
+        return w;
+    };
+    std::vector<std::size_t> order(paths.size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t x, std::size_t y) { return word(x) < word(y); });
+    return order;
+}
+
 }  // namespace
 
 bool mesh_bvh::packs(const bvh& tree) {
@@ -151,22 +176,20 @@ mesh_bvh::mesh_bvh(std::shared_ptr<const bvh> tree) : binary(std::move(tree)) {
 // at the same nearest t, the first visited wins, as in the binary tree.
 std::uint32_t mesh_bvh::pack_leaf(std::uint32_t index) {
     const std::vector<bvh::node>& tree = binary->nodes();
-    struct item {
-        std::uint32_t triangle;
-        std::vector<std::pair<int, int>> path;  // (side, axis) per binary level
-    };
-    std::vector<item> items;
-    auto collect = [&](auto&& self, std::uint32_t i, std::vector<std::pair<int, int>> path) {
+    std::vector<std::uint32_t> items;  // the triangles, in the binary tree's order
+    std::vector<path> paths;           // and the way to each from here
+    auto collect = [&](auto&& self, std::uint32_t i, const path& to) -> void {
         const bvh::node& b = tree[i];
         if (b.count > 0) {
-            for (std::uint32_t k = b.offset; k < b.offset + b.count; ++k)
-                items.push_back(
-                    {static_cast<const mesh_triangle&>(*binary->objects()[k]).index(), path});
+            for (std::uint32_t k = b.offset; k < b.offset + b.count; ++k) {
+                items.push_back(static_cast<const mesh_triangle&>(*binary->objects()[k]).index());
+                paths.push_back(to);
+            }
             return;
         }
-        auto first = path, second = path;
-        first.emplace_back(0, b.axis);
-        second.emplace_back(1, b.axis);
+        path first = to, second = to;
+        first.push_back({0, b.axis});
+        second.push_back({1, b.axis});
         self(self, i + 1, first);
         self(self, b.offset, second);
     };
@@ -176,22 +199,13 @@ std::uint32_t mesh_bvh::pack_leaf(std::uint32_t index) {
     const auto first     = std::uint32_t(triangles.size());
     std::uint64_t orders = 0;
     for (int octant = 0; octant < 8; ++octant) {
-        auto rank = [&](std::size_t k) {
-            std::vector<int> word;
-            for (const auto& [side, axis] : items[k].path)
-                word.push_back(side ^ (octant >> axis & 1));
-            return word;
-        };
-        std::array<std::size_t, 4> lane_of{0, 1, 2, 3};
-        // Stable: the triangles of one binary leaf share a path, and are tried in its order.
-        std::stable_sort(lane_of.begin(), lane_of.begin() + std::ptrdiff_t(items.size()),
-                         [&](std::size_t x, std::size_t y) { return rank(x) < rank(y); });
-        for (std::size_t i = 0; i < items.size(); ++i)
+        const std::vector<std::size_t> lane_of = visiting_order(paths, octant);
+        for (std::size_t i = 0; i < lane_of.size(); ++i)
             orders |= std::uint64_t(lane_of[i]) << (8 * octant + 2 * int(i));
     }
-    for (const item& it : items) {
-        triangles.push_back(it.triangle);
-        corners.push_back(mesh->triangle(it.triangle));
+    for (const std::uint32_t triangle : items) {
+        triangles.push_back(triangle);
+        corners.push_back(mesh->triangle(triangle));
         visit_orders.push_back(orders);
     }
     return leaf_bit | first << 2 | std::uint32_t(items.size() - 1);
@@ -205,12 +219,9 @@ std::uint32_t mesh_bvh::pack(std::uint32_t index) {
     // The lanes: up to eight nodes of the binary subtree below this one, none inside another, as
     // chapter 17's wide_bvh::pack chooses four: the interior lane with the largest box gives
     // way to its two children while there is room. Each keeps its path, which orders the visits.
-    struct step {
-        int side, axis;
-    };
     struct lane {
         std::uint32_t binary;
-        std::vector<step> path;
+        path to;
     };
     std::vector<lane> lanes = {{index + 1, {{0, b.axis}}}, {b.offset, {{1, b.axis}}}};
     while (lanes.size() < 8) {
@@ -229,8 +240,8 @@ std::uint32_t mesh_bvh::pack(std::uint32_t index) {
         lane first = parent, second = parent;
         first.binary  = parent.binary + 1;
         second.binary = c.offset;
-        first.path.push_back({0, c.axis});
-        second.path.push_back({1, c.axis});
+        first.to.push_back({0, c.axis});
+        second.to.push_back({1, c.axis});
         lanes[std::size_t(widest)] = first;
         lanes.insert(lanes.begin() + widest + 1, second);
     }
@@ -254,19 +265,14 @@ std::uint32_t mesh_bvh::pack(std::uint32_t index) {
             n.bounds[3 + axis][k] = upper;
         }
     for (int k = 0; k < 8; ++k) n.child[k] = child[k];
+    // Unused lanes are visited last (their empty boxes are never hit).
+    std::vector<path> paths;
+    for (const lane& l : lanes) paths.push_back(l.to);
     for (int octant = 0; octant < 8; ++octant) {
-        auto rank = [&](std::size_t k) {
-            std::vector<int> word;
-            for (const step& st : lanes[k].path) word.push_back(st.side ^ (octant >> st.axis & 1));
-            return word;
-        };
-        std::array<std::size_t, 8> lane_of{0, 1, 2, 3, 4, 5, 6, 7};
-        std::sort(lane_of.begin(), lane_of.end(), [&](std::size_t x, std::size_t y) {
-            if (x >= lanes.size() || y >= lanes.size()) return x < y;
-            return rank(x) < rank(y);
-        });
+        std::vector<std::size_t> lane_of = visiting_order(paths, octant);
+        for (std::size_t k = lanes.size(); k < 8; ++k) lane_of.push_back(k);
         std::uint32_t order = 0;
-        for (int i = 0; i < 8; ++i) order |= std::uint32_t(lane_of[std::size_t(i)]) << (3 * i);
+        for (std::size_t i = 0; i < 8; ++i) order |= std::uint32_t(lane_of[i]) << (3 * i);
         n.order[octant] = order;
     }
     return here;
