@@ -189,6 +189,24 @@ inline bool nearest_triangle_hit(const rt::mesh_data& m, const rt::ray& r, rt::i
     return any;
 }
 
+// `count` triangles, each vertex stored for it alone: a corner uniform in the cube of half side
+// `half_side` about the origin, and the two others at distances log-uniform in
+// [10^lo_exponent, 10^hi_exponent] from it, in uniform directions.
+inline rt::mesh_data triangle_soup(rt::pcg32& rng, std::uint32_t count, rt::real half_side,
+                                   rt::real lo_exponent, rt::real hi_exponent) {
+    rt::mesh_data data;
+    for (std::uint32_t i = 0; i < count; ++i) {
+        const rt::point3 p0    = random_in_cube(rng, half_side);
+        const rt::real length1 = log_uniform(rng, lo_exponent, hi_exponent);
+        const rt::point3 p1    = p0 + length1 * random_unit(rng);
+        const rt::real length2 = log_uniform(rng, lo_exponent, hi_exponent);
+        const rt::point3 p2    = p0 + length2 * random_unit(rng);
+        data.positions.insert(data.positions.end(), {p0, p1, p2});
+        data.triangles.push_back({3 * i, 3 * i + 1, 3 * i + 2});
+    }
+    return data;
+}
+
 // A point of triangle i at barycentric weights drawn uniformly over it, each weight at least
 // `margin` (margin < 1/3): three draws.
 inline rt::point3 random_point_in(const rt::mesh_data& m, std::size_t i, rt::pcg32& rng,

@@ -204,16 +204,9 @@ TEST_CASE(
     "nearest hit and the binary tree's record where it finds it",
     "[ch18]") {
     rt::pcg32 rng(20251203, 2);
-    rt::mesh_data data;
-    for (std::uint32_t i = 0; i < 3000; ++i) {
-        const point3 p0 = random_in_cube(rng, 10);
-        const point3 p1 = p0 + log_uniform(rng, -3, 1) * random_unit(rng);
-        const point3 p2 = p0 + log_uniform(rng, -3, 1) * random_unit(rng);
-        data.positions.insert(data.positions.end(), {p0, p1, p2});
-        data.triangles.push_back({3 * i, 3 * i + 1, 3 * i + 2});
-    }
-    auto mesh = mesh_of(data);
-    auto tree = rt::mesh_object(mesh);
+    const rt::mesh_data data = rt_test::triangle_soup(rng, 3000, 10, -3, 1);
+    auto mesh                = mesh_of(data);
+    auto tree                = rt::mesh_object(mesh);
     const rt::mesh_bvh packed(tree);
     comparison c;
     for (int i = 0; i < 10000; ++i) {

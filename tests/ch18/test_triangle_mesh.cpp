@@ -301,17 +301,8 @@ TEST_CASE(
     "every triangle's, the same t to the bit and the same triangle",
     "[ch18]") {
     rt::pcg32 rng(20250118, 12);
-    rt::mesh_data data;
-    for (std::uint32_t i = 0; i < 2000; ++i) {
-        const point3 p0    = random_in_cube(rng, 10);
-        const real length1 = log_uniform(rng, -1, real(0.5));
-        const point3 p1    = p0 + length1 * random_unit(rng);
-        const real length2 = log_uniform(rng, -1, real(0.5));
-        const point3 p2    = p0 + length2 * random_unit(rng);
-        data.positions.insert(data.positions.end(), {p0, p1, p2});
-        data.triangles.push_back({3 * i, 3 * i + 1, 3 * i + 2});
-    }
-    auto mesh = std::make_shared<rt::triangle_mesh>(data, rt_test::any_material());
+    const rt::mesh_data data = rt_test::triangle_soup(rng, 2000, 10, -1, real(0.5));
+    auto mesh                = std::make_shared<rt::triangle_mesh>(data, rt_test::any_material());
     REQUIRE(mesh->triangle_count() == 2000);
     auto tree = rt::mesh_object(mesh);
     comparison c;
