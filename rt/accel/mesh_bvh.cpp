@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <typeinfo>
 
+#include "rt/core/exercise.h"
+
 namespace rt {
 
 namespace {
@@ -55,8 +57,9 @@ struct float_slabs {
     bool usable = true;  // false: a direction or origin the floats cannot bound
 
     explicit float_slabs(const ray& r) {
-        constexpr real eps = std::numeric_limits<float>::epsilon();
         for (int axis = 0; axis < 3; ++axis) {
+            // [exercise float_slabs begin]
+            constexpr real eps = std::numeric_limits<float>::epsilon();
             const real o = r.origin()[axis], inv = 1 / r.direction()[axis];
             const float smaller = float(inv * (1 - 4 * eps)), larger = float(inv * (1 + 4 * eps));
             // A tiny direction component whose inverse overflows float would make a finite
@@ -73,6 +76,7 @@ struct float_slabs {
             near[axis]        = negative ? 3 + axis : axis;
             far[axis]         = negative ? axis : 3 + axis;
             octant |= negative ? 1 << axis : 0;
+            // [exercise float_slabs end]
         }
     }
 };
