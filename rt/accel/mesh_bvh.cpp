@@ -143,8 +143,10 @@ std::vector<std::size_t> visiting_order(const std::vector<path>& paths, int octa
 bool mesh_bvh::packs(const bvh& tree) {
     const triangle_mesh* first = nullptr;
     for (const auto& object : tree.objects()) {
-        if (!object || typeid(*object) != typeid(mesh_triangle)) return false;
-        const auto& t = static_cast<const mesh_triangle&>(*object);
+        if (!object) return false;
+        const hittable& shape = *object;
+        if (typeid(shape) != typeid(mesh_triangle)) return false;
+        const auto& t = static_cast<const mesh_triangle&>(shape);
         if (first && &t.mesh() != first) return false;
         first = &t.mesh();
     }
@@ -271,9 +273,11 @@ std::uint32_t mesh_bvh::pack(std::uint32_t index) {
     for (int k = 0; k < 8; ++k) n.child[k] = child[k];
     // Unused lanes are visited last (their empty boxes are never hit).
     std::vector<path> paths;
+    paths.reserve(lanes.size());
     for (const lane& l : lanes) paths.push_back(l.to);
     for (int octant = 0; octant < 8; ++octant) {
         std::vector<std::size_t> lane_of = visiting_order(paths, octant);
+        lane_of.reserve(8);
         for (std::size_t k = lanes.size(); k < 8; ++k) lane_of.push_back(k);
         std::uint32_t order = 0;
         for (std::size_t i = 0; i < 8; ++i) order |= std::uint32_t(lane_of[i]) << (3 * i);
