@@ -13,20 +13,9 @@
 #include "rt/materials/dielectric.h"
 #include "rt/materials/diffuse_light.h"
 #include "rt/materials/lambertian.h"
+#include "rt/models/model_fit.h"
 #include "rt/models/obj_model.h"
 #include "rt/models/vertex_normals.h"
-
-// The model scaled, without turning it, to `height` (its box's y extent), its box's floor centre
-// moved to `base`: a scan comes in its own units, wherever its author left it.
-inline rt::mesh_data fitted(rt::mesh_data model, const rt::point3& base, rt::real height) {
-    rt::aabb box;
-    for (const rt::point3& p : model.positions) box = rt::aabb(box, rt::aabb(p, p));
-    const rt::real scale = height / box.y.size();
-    const rt::point3 floor_centre((box.x.min + box.x.max) / 2, box.y.min,
-                                  (box.z.min + box.z.max) / 2);
-    for (rt::point3& p : model.positions) p = base + scale * (p - floor_centre);
-    return model;
-}
 
 // The kinds of model the chapter shows.
 enum class model_look { white, glass, light };
@@ -52,7 +41,7 @@ inline rt::scene model_in_cornell_box(const std::string& model_file, model_look 
     if (shading == model_shading::flat) model.mesh.normals.clear();
     if (shading == model_shading::smooth && model.mesh.normals.empty())
         rt::add_smooth_normals(model.mesh);
-    model.mesh = fitted(std::move(model.mesh), point3(190, 0, 190), 180);
+    model.mesh = rt::fitted(std::move(model.mesh), point3(190, 0, 190), 180);
     std::vector<std::string> warnings;
     auto mesh = rt::mesh_of_model(std::move(model), surface, model_file, warnings);
     for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";

@@ -36,6 +36,10 @@ bvh::bvh(const std::vector<bounded_object>& input) {
     if (!items.empty()) build(items, 0, items.size(), 1);
     // The leaves' objects, in the order build() left them: leaf by leaf.
     for (const build_item& item : items) leaf_objects.push_back(input[item.object].object);
+    // [ch19 begin]
+    given_index.reserve(items.size());
+    for (const build_item& item : items) given_index.push_back(item.object);
+    // [ch19 end]
 
     // Traversal keeps pending second children on a fixed stack: the tree must fit it (build()
     // bounds the depth by about 40 + log2(n), so this can only fail beyond ~2^23 pathological
@@ -152,6 +156,14 @@ std::uint32_t bvh::build(std::vector<build_item>& items, std::size_t begin, std:
     return make_interior(mid, axis);
     // [exercise bvh::build end]
 }
+
+// [ch19 begin]
+std::vector<std::shared_ptr<hittable>> bvh::objects_as_given() const {
+    std::vector<std::shared_ptr<hittable>> given(leaf_objects.size());
+    for (std::size_t k = 0; k < leaf_objects.size(); ++k) given[given_index[k]] = leaf_objects[k];
+    return given;
+}
+// [ch19 end]
 
 bool bvh::hit(const ray& r, interval ray_t, hit_record& rec) const {
     // [exercise bvh::hit begin]

@@ -48,6 +48,11 @@ class bvh : public bounded_hittable {
     std::size_t node_count() const { return tree.size(); }
     std::size_t object_count() const { return leaf_objects.size(); }
     int depth() const { return levels; }
+    // [ch19 begin]
+    // The objects in the order they were given (a scene file lists them so, and the same list
+    // builds the same tree).
+    std::vector<std::shared_ptr<hittable>> objects_as_given() const;
+    // [ch19 end]
 
     // The deepest a tree may be: traversal keeps the second children it has yet to visit on a
     // stack of this size.
@@ -60,6 +65,7 @@ class bvh : public bounded_hittable {
 
     std::vector<node> tree;
     std::vector<std::shared_ptr<hittable>> leaf_objects;
+    std::vector<std::uint32_t> given_index;  // [ch19] leaf_objects[k] was given as given_index[k]
     int levels = 0;
 };
 

@@ -48,6 +48,7 @@ class book_random {
     explicit book_random(std::uint32_t seed = book_layout_seed()) {
         // glibc keeps the seed in a 32-bit signed word and multiplies by Schrage's method,
         // which for a negative word (a seed of 2^31 or more) gives its own numbers.
+        first_seed        = seed;  // [ch19]
         std::int64_t word = std::int32_t(seed == 0 ? 1 : seed);
         std::array<std::uint32_t, 344> r{};  // the words, added modulo 2^32 from r[34] on
         r[0] = std::uint32_t(word);
@@ -65,6 +66,7 @@ class book_random {
 
     // rand(): the next number in [0, RAND_MAX].
     std::int32_t next() {
+        ++drawn;  // [ch19]
         std::uint32_t& word = ring[position];
         word += ring[(position + 28) % 31];  // r[i-31] + r[i-3]
         position = (position + 1) % 31;
@@ -87,9 +89,20 @@ class book_random {
         for (std::size_t i = 0; i < draws; ++i) next();
     }
 
+    // [ch19 begin]
+    // The seed it started from and the numbers drawn since: where a later draw stands in the
+    // stream (a scene file names the Perlin tables so).
+    std::uint32_t seed() const { return first_seed; }
+    std::uint64_t draws() const { return drawn; }
+    // [ch19 end]
+
   private:
     std::array<std::uint32_t, 31> ring{};  // the last 31 words
     std::size_t position = 0;              // where the word of 31 draws ago sits
+    // [ch19 begin]
+    std::uint32_t first_seed = 1;
+    std::uint64_t drawn      = 0;
+    // [ch19 end]
 };
 
 }  // namespace rt

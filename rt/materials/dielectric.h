@@ -33,6 +33,12 @@ class dielectric : public material {
     // The reflectance for a ray arriving at cos_theta to the normal, eta = n_in / n_out.
     real reflectance(real cos_theta, real eta) const;
 
+    // [ch19 begin]
+    // What it was made with, for a scene file (rt/scene_files).
+    real refraction_index() const { return ior; }
+    fresnel_model fresnel() const { return model; }
+    // [ch19 end]
+
   private:
     real ior;
     fresnel_model model;

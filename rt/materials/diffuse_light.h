@@ -29,6 +29,8 @@ class diffuse_light : public material {
         return std::nullopt;
     }
 
+    const std::shared_ptr<texture>& emission() const { return radiance; }  // [ch19]
+
   private:
     std::shared_ptr<texture> radiance;
 };

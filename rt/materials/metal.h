@@ -16,6 +16,12 @@ class metal : public material {
     std::optional<scatter_sample> scatter(const ray& r_in, const hit_record& rec,
                                           sampler& s) const override;
 
+    // [ch19 begin]
+    // What it was made with, for a scene file (rt/scene_files).
+    const color& albedo_color() const { return albedo; }
+    real fuzziness() const { return fuzz; }
+    // [ch19 end]
+
   private:
     color albedo;
     real fuzz;

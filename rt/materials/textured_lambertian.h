@@ -28,6 +28,8 @@ class textured_lambertian : public material {
     }
     // [ch14 end]
 
+    const std::shared_ptr<texture>& albedo_texture() const { return albedo; }  // [ch19]
+
   private:
     std::shared_ptr<texture> albedo;
 };

@@ -25,6 +25,8 @@ class isotropic : public material {
     real pdf(const ray& r_in, const hit_record& rec, const vec3& wi) const override;
     // [ch14 end]
 
+    const std::shared_ptr<texture>& albedo_texture() const { return albedo; }  // [ch19]
+
   private:
     std::shared_ptr<texture> albedo;
 };

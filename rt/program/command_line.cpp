@@ -122,6 +122,10 @@ void command_line::add_uint32_action(const std::string& flag, const std::string&
     cli->add_option_function<std::uint32_t>(flag, act, help);
 }
 
+void command_line::add_flag(const std::string& flag, bool& value, const std::string& help) {
+    cli->add_flag(flag, value, help);
+}
+
 render_settings command_line::with_flags(render_settings s) const {
     auto given = [this](const char* flag) { return cli->count(flag) > 0; };
     if (given("--width")) s.width = flags.width;
@@ -230,9 +234,15 @@ void command_line::write_outputs(const render_result& result,
 }
 
 int command_line::run(int argc, char** argv, const std::function<render_job()>& build) {
+    return run(argc, argv, build, [] { return false; });
+}
+
+int command_line::run(int argc, char** argv, const std::function<render_job()>& build,
+                      const std::function<bool()>& instead) {
     const auto start = clock::now();
     if (auto stop = parse(argc, argv)) return *stop;
     try {
+        if (instead()) return 0;
         render_job job                 = build();
         const render_settings settings = with_flags(job.settings);
         const film f                   = film::for_aspect(settings.width, job.cam->aspect_ratio);

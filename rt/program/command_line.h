@@ -54,6 +54,8 @@ class command_line {
     void add_choice_action(const std::string& flag, const std::vector<std::string>& allowed,
                            const std::string& help,
                            const std::function<void(const std::string&)>& act);
+    // A flag without a value: value becomes true when it is given.
+    void add_flag(const std::string& flag, bool& value, const std::string& help);
     // An unsigned 32-bit integer, handed to act when the flag is given.
     void add_uint32_action(const std::string& flag, const std::string& help,
                            const std::function<void(std::uint32_t)>& act);
@@ -63,11 +65,19 @@ class command_line {
     // or none, and print a summary. Returns the exit code: 0 on success (or --help), 2 for a
     // user error with one line on stderr naming it, 1 for an internal error.
     int run(int argc, char** argv, const std::function<render_job()>& build);
+    // The same, except that once the arguments are parsed `instead` may do the run's whole work
+    // itself and return true (chapter 19 writes a scene file rather than render it): then
+    // nothing is built or rendered. Its user errors end the run as run()'s do.
+    int run(int argc, char** argv, const std::function<render_job()>& build,
+            const std::function<bool()>& instead);
 
     // run()'s first step alone: parses and checks the arguments, builds and renders nothing.
     // Returns the exit code to stop with (0 after --help, 2 after one line on stderr naming the
     // error), or nothing when run() would go on. The fuzz target of the command line calls it.
     std::optional<int> parse(int argc, char** argv);
+
+    // The job's settings with every flag the user gave put over them.
+    render_settings with_flags(render_settings scene_defaults) const;
 
   private:
     using clock = std::chrono::steady_clock;
@@ -80,8 +90,6 @@ class command_line {
         std::string stats;
     };
 
-    // The job's settings with every flag the user gave put over them.
-    render_settings with_flags(render_settings scene_defaults) const;
     // The chapter's own flags (those it added through app()) and their values in force.
     std::vector<std::pair<std::string, std::string>> chapter_options() const;
 

@@ -143,6 +143,7 @@ void set_default_texel_decoding(texel_decoding d) {
 
 image_texture::image_texture(const std::string& path, std::int64_t texel_limit, texel_decoding d)
     : decoding(d) {
+    given_path = path;  // [ch19]
     // One open file for the header and the pixels, so both are read from the same file.
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
                                                          std::fclose);

@@ -49,6 +49,12 @@ class image_texture : public texture {
     int width() const { return w; }
     int height() const { return h; }
 
+    // [ch19 begin]
+    // What it was made with, for a scene file (rt/scene_files).
+    const std::string& path() const { return given_path; }
+    texel_decoding decoding_used() const { return decoding; }
+    // [ch19 end]
+
   private:
     struct stb_free {
         void operator()(unsigned char* pixels) const;
@@ -56,6 +62,7 @@ class image_texture : public texture {
 
     int w = 0, h = 0;
     texel_decoding decoding;
+    std::string given_path;  // [ch19] the path as given
     // 8-bit sRGB RGB, row 0 at the top: the buffer stb_image decoded into, kept as it is.
     std::unique_ptr<unsigned char, stb_free> texels;
 };

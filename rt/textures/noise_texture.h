@@ -32,6 +32,12 @@ class noise_texture : public texture {
     }
     bool uses_uv() const override { return false; }
 
+    // [ch19 begin]
+    // What it was made with, for a scene file (rt/scene_files).
+    real stripe_scale() const { return scale; }
+    const perlin& tables() const { return noise; }
+    // [ch19 end]
+
   private:
     perlin noise;
     real scale;

@@ -18,6 +18,10 @@ std::array<int, 256> permutation(book_random& draws) {
 }  // namespace
 
 perlin::perlin(book_random& draws) {
+    // [ch19 begin]
+    drawn_seed = draws.seed();
+    drawn_skip = draws.draws();
+    // [ch19 end]
     // Normalized points of the cube [-1, 1)^3, as the book has them (they lean a little
     // towards the cube's diagonals; the noise's bound and variance need only unit length).
     for (auto& g : gradients) g = unit_vector(draws.vector(-1, 1));

@@ -32,10 +32,21 @@ class perlin {
     // Sum of |octaves|: sum_{i<depth} 0.5^i noise(2^i p), then its absolute value; in [0, 2).
     real turbulence(point3 p, int depth = 7) const;
 
+    // [ch19 begin]
+    // Where its tables were drawn: the book's stream from srand(table_seed()), after
+    // table_skip() draws (a scene file names them so).
+    std::uint32_t table_seed() const { return drawn_seed; }
+    std::uint64_t table_skip() const { return drawn_skip; }
+    // [ch19 end]
+
   private:
     static constexpr int point_count = 256;
     std::array<vec3, point_count> gradients;
     std::array<int, point_count> perm_x, perm_y, perm_z;
+    // [ch19 begin]
+    std::uint32_t drawn_seed = 0;
+    std::uint64_t drawn_skip = 0;
+    // [ch19 end]
 };
 
 }  // namespace rt

@@ -20,6 +20,7 @@ checker_texture::checker_texture(real scale, std::shared_ptr<texture> even_textu
 sine_checker_texture::sine_checker_texture(real scale, std::shared_ptr<texture> even_texture,
                                            std::shared_ptr<texture> odd_texture)
     : frequency(pi / scale), even(std::move(even_texture)), odd(std::move(odd_texture)) {
+    given_scale = scale;  // [ch19]
     require_positive(scale, "checker scale");
     // A subnormal scale would make pi / scale infinite, and every sine NaN.
     require(scale >= std::numeric_limits<real>::min(), "checker scale", "not be subnormal", scale);

@@ -38,6 +38,8 @@ class solid_color : public texture {
     color value(real, real, const point3&) const override { return albedo; }
     bool uses_uv() const override { return false; }
 
+    const color& color_value() const { return albedo; }  // [ch19]
+
   private:
     color albedo;
 };
@@ -64,6 +66,13 @@ class checker_texture : public texture {
         // [exercise checker_texture::value end]
     }
     bool uses_uv() const override { return even->uses_uv() || odd->uses_uv(); }
+
+    // [ch19 begin]
+    // What it was made with, for a scene file (rt/scene_files).
+    real scale() const { return cell_size; }
+    const std::shared_ptr<texture>& even_texture() const { return even; }
+    const std::shared_ptr<texture>& odd_texture() const { return odd; }
+    // [ch19 end]
 
   private:
     real cell_size;
@@ -92,8 +101,16 @@ class sine_checker_texture : public texture {
     }
     bool uses_uv() const override { return even->uses_uv() || odd->uses_uv(); }
 
+    // [ch19 begin]
+    // What it was made with, for a scene file (rt/scene_files).
+    real scale() const { return given_scale; }
+    const std::shared_ptr<texture>& even_texture() const { return even; }
+    const std::shared_ptr<texture>& odd_texture() const { return odd; }
+    // [ch19 end]
+
   private:
-    real frequency;  // pi / scale: a half period of each sine is one cell
+    real frequency;        // pi / scale: a half period of each sine is one cell
+    real given_scale = 0;  // [ch19] as given: pi / frequency need not give it back
     std::shared_ptr<texture> even, odd;
 };
 
