@@ -116,6 +116,15 @@ def make_files(folder, with_bomb):
         "utf16.obj": "v 0 0 0\n".encode("utf-16"),
         "points.obj": b"v 0 0 0\nv 1 0 0\nv 0 1 0\np 1 2 3\n",
         "flat.obj": b"v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n",
+        # Scene files (chapter 19): a misspelt key, named objects in a cycle, a texture file that
+        # is missing, a later format, and a file that is not TOML.
+        "misspelt.toml": b'format = 1\n[world]\nobjects = [{ type = "sphere", center = [0, 0, 0], '
+                         b'raduis = 1 }]\n',
+        "cycle.toml": b'format = 1\n[named_objects.a]\nuse = "b"\n[named_objects.b]\nuse = "a"\n'
+                      b'[world]\nobjects = ["a"]\n',
+        "no_texture.toml": b'format = 1\n[textures]\nmap = { type = "image", file = "maps/earth.png" }\n',
+        "later.toml": b"format = 2\n",
+        "not_toml.toml": b"<scene><sphere/></scene>\n",
     }
     if with_bomb:  # 256 MiB of zeros in about 256 KiB, where a 1 x 1 image needs 4 bytes
         files["bomb.png"] = png(1, 1, zeros_deflated(256))

@@ -1,0 +1,221 @@
+#include "rt/scene_files/toml_fields.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "rt/core/error.h"
+#include "rt/core/exercise.h"
+
+namespace rt {
+
+std::string place_of(const toml::source_region& where) {
+    std::ostringstream place;
+    place << (where.path ? *where.path : std::string("<scene>")) << ":" << where.begin.line << ":"
+          << where.begin.column;
+    return place.str();
+}
+
+void refuse_at(const toml::source_region& where, const std::string& message) {
+    throw located_error(place_of(where) + ": " + message);
+}
+
+std::string shown(const toml::node& value) {
+    if (value.is_table()) return "a table";
+    std::ostringstream text;
+    // toml++'s own formatting: strings quoted and escaped as TOML writes them.
+    if (value.is_array())
+        text << toml::toml_formatter(*value.as_array(), toml::format_flags::allow_unicode_strings);
+    else
+        value.visit([&](const auto& v) {
+            if constexpr (toml::is_value<decltype(v)>)
+                text << toml::toml_formatter(v, toml::format_flags::allow_unicode_strings);
+        });
+    std::string s = text.str();
+    // A message is one line, and never a whole file.
+    for (char& c : s)
+        if (c == '\n' || c == '\r') c = ' ';
+    if (s.size() > 60) {
+        s.resize(57);
+        s += "...";
+    }
+    return s;
+}
+
+fields::fields(const toml::table& table, std::string what) : tab(table), name(std::move(what)) {}
+
+const toml::node* fields::find(std::string_view key) {
+    asked.emplace(key);
+    return tab.get(key);
+}
+
+const toml::node& fields::need(std::string_view key, std::string_view meaning) {
+    const toml::node* value = find(key);
+    if (!value) refuse("needs '" + std::string(key) + "' (" + std::string(meaning) + ")");
+    return *value;
+}
+
+void fields::refuse(const std::string& message) const {
+    refuse_at(tab.source(), name + " " + message);
+}
+
+namespace {
+
+std::string range_text(double lo, double hi, bool lo_open, bool hi_open = false) {
+    std::ostringstream text;
+    text.precision(17);
+    if (std::isinf(hi) && lo == -hi) return "a finite number";
+    if (std::isinf(hi)) {
+        text << "a finite number " << (lo_open ? "> " : ">= ") << lo;
+        return text.str();
+    }
+    text << "a number in " << (lo_open ? "(" : "[") << lo << ", " << hi << (hi_open ? ")" : "]");
+    return text.str();
+}
+
+}  // namespace
+
+real number_value(const toml::node& value, const std::string& what, double lo, double hi,
+                  bool lo_open, bool hi_open) {
+    std::optional<double> x;
+    if (value.is_integer()) x = double(*value.value<std::int64_t>());
+    if (value.is_floating_point()) x = *value.value<double>();
+    const std::string expected = range_text(lo, hi, lo_open, hi_open);
+    if (!x) refuse_at(value.source(), what + " must be " + expected + ", got " + shown(value));
+    const bool inside =
+        std::isfinite(*x) && (lo_open ? *x > lo : *x >= lo) && (hi_open ? *x < hi : *x <= hi);
+    // Also finite as the renderer's scalar: a double beyond float's range is no float.
+    if (!inside || !std::isfinite(real(*x)))
+        refuse_at(value.source(), what + " must be " + expected + ", got " + shown(value));
+    return real(*x);
+}
+
+vec3 vector_value(const toml::node& value, const std::string& what, double limit) {
+    const toml::array* list = value.as_array();
+    if (!list || list->size() != 3)
+        refuse_at(value.source(), what + " must be three numbers [x, y, z], got " + shown(value));
+    vec3 v;
+    for (std::size_t i = 0; i < 3; ++i)
+        v[int(i)] =
+            number_value(*list->get(i), what + "[" + std::to_string(i) + "]", -limit, limit);
+    return v;
+}
+
+real fields::number(std::string_view key, double lo, double hi, bool lo_open) {
+    return number_value(need(key, range_text(lo, hi, lo_open)), std::string(key), lo, hi, lo_open);
+}
+
+std::optional<real> fields::number_if(std::string_view key, double lo, double hi, bool lo_open,
+                                      bool hi_open) {
+    const toml::node* value = find(key);
+    if (!value) return std::nullopt;
+    return number_value(*value, std::string(key), lo, hi, lo_open, hi_open);
+}
+
+std::optional<std::int64_t> fields::integer_if(std::string_view key, std::int64_t lo,
+                                               std::int64_t hi) {
+    const toml::node* value = find(key);
+    if (!value) return std::nullopt;
+    const std::optional<std::int64_t> n =
+        value->is_integer() ? value->value<std::int64_t>() : std::nullopt;
+    if (!n || *n < lo || *n > hi)
+        refuse_at(value->source(), std::string(key) + " must be an integer in [" +
+                                       std::to_string(lo) + ", " + std::to_string(hi) + "], got " +
+                                       shown(*value));
+    return *n;
+}
+
+std::int64_t fields::integer(std::string_view key, std::int64_t lo, std::int64_t hi) {
+    need(key, "an integer");
+    return *integer_if(key, lo, hi);
+}
+
+std::optional<vec3> fields::vector_if(std::string_view key, double limit) {
+    const toml::node* value = find(key);
+    if (!value) return std::nullopt;
+    return vector_value(*value, std::string(key), limit);
+}
+
+vec3 fields::vector(std::string_view key, double limit) {
+    return vector_value(need(key, "three numbers [x, y, z]"), std::string(key), limit);
+}
+
+std::optional<bool> fields::flag_if(std::string_view key) {
+    const toml::node* value = find(key);
+    if (!value) return std::nullopt;
+    if (!value->is_boolean())
+        refuse_at(value->source(),
+                  std::string(key) + " must be true or false, got " + shown(*value));
+    return *value->value<bool>();
+}
+
+namespace {
+
+std::string choices(const std::vector<std::string_view>& allowed) {
+    std::string text;
+    std::size_t i = 0;
+    for (std::string_view word : allowed) {
+        if (i > 0) text += i + 1 == allowed.size() ? " or " : ", ";
+        text += '"';
+        text += word;
+        text += '"';
+        ++i;
+    }
+    return text;
+}
+
+}  // namespace
+
+std::optional<std::string> fields::word_if(std::string_view key,
+                                           const std::vector<std::string_view>& allowed) {
+    const toml::node* value = find(key);
+    if (!value) return std::nullopt;
+    const std::optional<std::string> word = value->value<std::string>();
+    if (value->is_string())
+        for (std::string_view w : allowed)
+            if (*word == w) return word;
+    refuse_at(value->source(),
+              std::string(key) + " must be " + choices(allowed) + ", got " + shown(*value));
+}
+
+std::string fields::word(std::string_view key, const std::vector<std::string_view>& allowed) {
+    need(key, "one of " + choices(allowed));
+    return *word_if(key, allowed);
+}
+
+std::optional<std::string> fields::text_if(std::string_view key) {
+    const toml::node* value = find(key);
+    if (!value) return std::nullopt;
+    if (!value->is_string())
+        refuse_at(value->source(), std::string(key) + " must be a string, got " + shown(*value));
+    return *value->value<std::string>();
+}
+
+void fields::allow(std::string what, const std::vector<std::string_view>& keys) {
+    // [exercise fields::allow begin]
+    describe_as(std::move(what));
+    for (const auto& [key, value] : tab) {
+        bool known = false;
+        for (std::string_view k : keys) known = known || k == key.str();
+        if (known) continue;
+        std::string list;
+        for (std::string_view k : keys) {
+            list += list.empty() ? "" : ", ";
+            list += k;
+        }
+        refuse_at(key.source(), "unknown key '" + std::string(key.str()) + "' in " + name +
+                                    " (its keys: " + list + ")");
+    }
+    // [exercise fields::allow end]
+}
+
+void fields::done() const {
+    for (const auto& [key, value] : tab) {
+        if (asked.contains(key.str())) continue;
+        std::string known;
+        for (const std::string& k : asked) known += (known.empty() ? "" : ", ") + k;
+        refuse_at(key.source(), "unknown key '" + std::string(key.str()) + "' in " + name +
+                                    " (its keys: " + known + ")");
+    }
+}
+
+}  // namespace rt
