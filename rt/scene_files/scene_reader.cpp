@@ -35,6 +35,7 @@
 #include "rt/scene_files/scene_limits.h"
 #include "rt/scene_files/scene_words.h"
 #include "rt/scene_files/toml_fields.h"
+#include "rt/scene_files/toml_guard.h"
 #include "rt/textures/image_texture.h"
 #include "rt/textures/noise_texture.h"
 #include "rt/textures/texture.h"
@@ -404,7 +405,9 @@ std::shared_ptr<texture> reader::texture_table(const toml::table& table) {
         const auto seed =
             std::uint32_t(t.integer_if("perlin_seed", 0, std::numeric_limits<std::uint32_t>::max())
                               .value_or(book_layout_seed()));
-        const auto skip = t.integer_if("perlin_skip", 0, std::int64_t(1) << 32).value_or(0);
+        // At most 2^20 draws (a few milliseconds): the book's scenes skip hundreds, and a file
+        // cannot make the reader spin through billions.
+        const auto skip = t.integer_if("perlin_skip", 0, std::int64_t(1) << 20).value_or(0);
         book_random draws(seed);
         draws.skip(std::size_t(skip));
         made = std::make_shared<noise_texture>(scale, draws);
@@ -684,6 +687,8 @@ described_scene parse_scene_text(std::string_view text, const std::string& file_
         throw user_error("scene file '" + file_name + "' must be at most " +
                          std::to_string(scene_limits::max_file_bytes) + " bytes, got " +
                          std::to_string(text.size()));
+    if (const auto finding = toml_guard(text))
+        refuse_at(file_name, finding->line, finding->column, finding->message);
     toml::table root;
     try {
         root = toml::parse(text, std::string_view(file_name));

@@ -331,7 +331,8 @@ std::string writer::material_value(const std::shared_ptr<material>& mat) {
         kind = "isotropic";
         keys = {{"type", "\"isotropic\""}, {"albedo", texture_value(fog->albedo_texture(), false)}};
     } else {
-        cannot_write(std::string("a material of type ") + typeid(*mat).name());
+        const material& kind_of = *mat;
+        cannot_write(std::string("a material of type ") + typeid(kind_of).name());
     }
     const std::string name = next_name(kind);
     material_names[key]    = name;
@@ -375,7 +376,8 @@ std::string writer::texture_value(const std::shared_ptr<texture>& tex, bool colo
                 {"perlin_seed", std::to_string(marble->tables().table_seed())},
                 {"perlin_skip", std::to_string(marble->tables().table_skip())}};
     } else {
-        cannot_write(std::string("a texture of type ") + typeid(*tex).name());
+        const texture& kind_of = *tex;
+        cannot_write(std::string("a texture of type ") + typeid(kind_of).name());
     }
     const std::string name = next_name(kind);
     texture_names[key]     = name;

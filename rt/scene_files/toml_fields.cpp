@@ -15,8 +15,41 @@ std::string place_of(const toml::source_region& where) {
     return place.str();
 }
 
+namespace {
+
+// The message as one line of text: a control character (a newline toml++ quotes as the
+// character it saw, one inside a quoted key) shown as \n, \r, \t or \xNN.
+std::string one_line(const std::string& message) {
+    std::string line;
+    for (const char c : message) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (c == '\n')
+            line += "\\n";
+        else if (c == '\r')
+            line += "\\r";
+        else if (c == '\t')
+            line += "\\t";
+        else if (byte < 0x20 || byte == 0x7f) {
+            constexpr char hex[] = "0123456789abcdef";
+            line += "\\x";
+            line += hex[byte >> 4];
+            line += hex[byte & 15];
+        } else {
+            line += c;
+        }
+    }
+    return line;
+}
+
+}  // namespace
+
 void refuse_at(const toml::source_region& where, const std::string& message) {
-    throw located_error(place_of(where) + ": " + message);
+    throw located_error(one_line(place_of(where) + ": " + message));
+}
+
+void refuse_at(const std::string& file, int line, int column, const std::string& message) {
+    throw located_error(one_line(file + ":" + std::to_string(line) + ":" + std::to_string(column) +
+                                 ": " + message));
 }
 
 std::string shown(const toml::node& value) {

@@ -29,6 +29,10 @@ class located_error : public user_error {
 // Throws located_error "FILE:LINE:COLUMN: message" for the place `where` (a node's source).
 [[noreturn]] void refuse_at(const toml::source_region& where, const std::string& message);
 
+// The same for a place known by its line and column in `file`.
+[[noreturn]] void refuse_at(const std::string& file, int line, int column,
+                            const std::string& message);
+
 // build(), its refusals without a place (a constructor's "sphere radius must be positive...")
 // given the place `where`.
 template <typename Build>

@@ -158,6 +158,18 @@ TEST_CASE("every bad file is refused with its line, column and what was expected
              "[world]\nobjects = [{ type = \"mesh\", file = \"/etc/hostname\", "
              "material = \"matte\" }]\n",
          "bad.toml:5:36: ", "model file '/etc/hostname' (resolved: /etc/hostname): "},
+        {"a boolean cut short (toml++ quotes the line's end it saw: shown as \\n)",
+         header + "[render]\nseed = t\n", "bad.toml:3:9: ", "expected 'true', saw 't\\n'"},
+        {"a quoted key holding a newline", header + "\"a\\nb\" = 1\n", "bad.toml:2:1: ",
+         "unknown key 'a\\nb' in scene file"},
+        {"a character outside ASCII between tokens (toml++ 3.3.0 would misread it: refused first)",
+         header + "[render]\nwidth = 4 \xcc\xaa\n", "bad.toml:3:11: ",
+         "a character outside ASCII stands outside a string or a comment"},
+        {"a bare key outside ASCII", header + "caf\xc3\xa9 = 1\n", "bad.toml:2:4: ",
+         "a character outside ASCII stands outside a string or a comment"},
+        {"a character outside ASCII after a line-ending backslash",
+         header + "s = \"\"\"\\\n\xc2\xa7\"\"\"\n", "bad.toml:3:1: ",
+         "a character outside ASCII right after a line-ending backslash"},
         {"a duplicated key (TOML refuses it)", header + "[render]\nwidth = 4\nwidth = 5\n",
          "bad.toml:4:9: ", "cannot redefine existing integer 'width'"},
     };

@@ -284,3 +284,14 @@ TEST_CASE("read_scene_file reads the chapter's own scene file", "[ch19]") {
     CHECK(d.scene.settings.make_sampler == rt::sobol_sampler::make);
     CHECK(dynamic_cast<const rt::bvh*>(d.scene.world.get())->objects_as_given().size() == 8);
 }
+
+TEST_CASE("comments, strings and quoted names may hold any UTF-8 text", "[ch19]") {
+    const rt::described_scene d = parsed(R"(# Scène de la classe : la boîte de Cornell — 日本
+format = 1
+[materials]
+"rouge écarlate" = { type = "lambertian", albedo = [0.65, 0.05, 0.05] }  # §
+[world]
+objects = [{ type = "sphere", center = [0, 0, 0], radius = 1, material = "rouge écarlate" }]
+)");
+    CHECK(as<rt::sphere>(listed(d)[0]).surface() != nullptr);
+}
