@@ -181,7 +181,6 @@ described_scene reader::read() {
 
     out.scene.world = std::make_shared<hittable_list>();
     if (const toml::node* world = top.find("world")) out.scene.world = read_world(*world);
-    top.done();
 
     // Definitions nobody used are read too: a mistake in one is found before the teacher uses it.
     for (const toml::table* defs : {texture_defs, material_defs, object_defs}) {
@@ -252,7 +251,6 @@ void reader::read_render(const toml::node& node, described_scene& out) {
     }
     if (auto sampler = f.word_if("sampler", {"independent", "sobol"}))
         s.make_sampler = *sampler == "sobol" ? sobol_sampler::make : independent_sampler::make;
-    f.done();
 }
 
 std::shared_ptr<camera> reader::read_camera(const toml::node& node) {
@@ -298,7 +296,6 @@ std::shared_ptr<camera> reader::read_camera(const toml::node& node) {
             cam->aspect_ratio = double(number_value(*aspect, "aspect_ratio", 0, big, true));
     }
     if (auto x = f.number_if("vfov", 0, 180, true, true)) cam->vfov = *x;
-    f.done();
     return cam;
 }
 
@@ -316,7 +313,6 @@ background reader::read_sky(const toml::node& node) {
         if (const toml::node* bottom = f.find("bottom"))
             sky.bottom = color_value(*bottom, "bottom");
     }
-    f.done();
     return sky;
 }
 
@@ -333,7 +329,6 @@ std::shared_ptr<hittable> reader::read_world(const toml::node& node) {
         for (const toml::node& element : *array)
             placed.emplace_back(object_from(element, "object"), element.source());
     }
-    f.done();
     if (use_bvh) {
         std::vector<bounded_object> boxed_objects;
         boxed_objects.reserve(placed.size());
@@ -412,7 +407,6 @@ std::shared_ptr<texture> reader::texture_table(const toml::table& table) {
         draws.skip(std::size_t(skip));
         made = std::make_shared<noise_texture>(scale, draws);
     }
-    t.done();
     return made;
 }
 
@@ -470,7 +464,6 @@ std::shared_ptr<material> reader::material_table(const toml::table& table) {
         else
             made = std::make_shared<diffuse_light>(texture_from(emit, "emit"));
     }
-    m.done();
     return made;
 }
 
@@ -517,7 +510,6 @@ built_object reader::object_table(const toml::table& table) {
             made = shape(f, type);
     }
     if (const toml::node* steps = f.find("transform")) made = transformed(made, *steps);
-    f.done();
     return made;
 }
 
@@ -614,7 +606,6 @@ built_object reader::mesh(fields& f) {
         fields place(*fit_node->as_table(), "fit");
         place.allow("fit", {"base", "height"});
         fit.emplace(place.vector("base", big), place.number("height", 0, big, true));
-        place.done();
     }
     auto surface = material_from(f.need("material", "a material's name or table"), "material");
     const std::string path = resolved(written);
@@ -661,7 +652,6 @@ built_object reader::transformed(built_object object, const toml::node& steps) {
         } else {
             s.refuse("needs 'translate' or 'rotate'");
         }
-        s.done();
     }
     return object;
 }

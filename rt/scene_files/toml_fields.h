@@ -1,8 +1,8 @@
 // Reading the values of a scene file's tables, each checked where it stands: every refusal is
 // one line "FILE:LINE:COLUMN: message" naming the key and what was expected, at the value (or,
 // for a missing key, at its table). Chapter 19.
-// A table is read through `fields`, which remembers each key asked for; done() refuses the keys
-// nobody asked for, so a misspelt key ("raduis") is an error, not a silent default.
+// A table is read through `fields`, told first the keys its kind may have (allow): any other
+// key is refused at once, so a misspelt key ("raduis") is an error, not a silent default.
 // toml++ (Debian's libtomlplusplus-dev) parses; it knows the line and column of every node.
 #pragma once
 
@@ -10,7 +10,6 @@
 
 #include <cstdint>
 #include <optional>
-#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -66,7 +65,7 @@ class fields {
     // Describes the table anew, once its type is known ("sphere" rather than "object").
     void describe_as(std::string what) { name = std::move(what); }
 
-    // The value of `key`, or null when absent; either way the key counts as read.
+    // The value of `key`, or null when absent.
     const toml::node* find(std::string_view key);
     // The value of `key`; refuses "<what> needs '<key>' (<meaning>)" when absent.
     const toml::node& need(std::string_view key, std::string_view meaning);
@@ -90,8 +89,6 @@ class fields {
     // Any string.
     std::optional<std::string> text_if(std::string_view key);
 
-    // Refuses the first key nobody asked for: "unknown key 'raduis' in sphere (keys: ...)".
-    void done() const;
 
     // Refuses at this table: "<what>: message".
     [[noreturn]] void refuse(const std::string& message) const;
@@ -99,7 +96,6 @@ class fields {
   private:
     const toml::table& tab;
     std::string name;
-    std::set<std::string, std::less<>> asked;
 };
 
 // The same checks for a value that is no table's key (an element of an array).
