@@ -47,7 +47,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::string first;
     try {
         const rt::described_scene read = rt::parse_scene_text(text, name, RT_SCENE_FOLDER);
-        first = rt::scene_file_text(read, RT_SCENE_FOLDER, "fuzz");
+        first                          = rt::scene_file_text(read, RT_SCENE_FOLDER, "fuzz");
         for (const rt::vec3& d : {rt::vec3(0, 0, -1), rt::vec3(1, -1, 0.5), rt::vec3(0, -1, 0)}) {
             rt::hit_record rec;
             const rt::ray r(rt::point3(0.25, 1, 3), d);
@@ -57,14 +57,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         }
     } catch (const rt::user_error& e) {
         const std::string message = e.what();
-        if (message.rfind(name + ":", 0) != 0) broken("the refusal does not name the file", message);
+        if (message.rfind(name + ":", 0) != 0)
+            broken("the refusal does not name the file", message);
         if (message.find('\n') != std::string::npos) broken("the refusal is not one line", message);
         return 0;
     }
     // What was read, written and read again, is written the same.
     try {
-        const rt::described_scene again = rt::parse_scene_text(first, "written.toml", RT_SCENE_FOLDER);
-        const std::string second        = rt::scene_file_text(again, RT_SCENE_FOLDER, "fuzz");
+        const rt::described_scene again =
+            rt::parse_scene_text(first, "written.toml", RT_SCENE_FOLDER);
+        const std::string second = rt::scene_file_text(again, RT_SCENE_FOLDER, "fuzz");
         if (second != first) broken("the written file, read and written again, differs", first);
     } catch (const rt::user_error& e) {
         broken("the written file is refused", std::string(e.what()) + "\n" + first);

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -44,9 +45,8 @@ namespace rt {
 
 namespace {
 
-namespace fs                   = std::filesystem;
-constexpr double big           = scene_limits::max_magnitude;
-constexpr double infinite_edge = std::numeric_limits<double>::infinity();
+namespace fs         = std::filesystem;
+constexpr double big = scene_limits::max_magnitude;
 
 // An object as built: what it is, and its box where it has one (a group with bvh = false has
 // none: it cannot go into a BVH, an instance or a medium).
@@ -481,7 +481,7 @@ built_object reader::named_object(const std::string& name, const toml::source_re
     for (const std::string& open : being_built) cycle += open + " -> ";
     for (const std::string& open : being_built)
         if (open == name)
-            refuse_at(where, "named objects use each other in a cycle: " + cycle + name);
+            refuse_at(where, "named objects use each other in a cycle: " + cycle.append(name));
     being_built.push_back(name);
     built_object made = object_table(def);
     being_built.pop_back();

@@ -88,7 +88,7 @@ std::string inline_table(const key_values& keys) {
 
 std::string block(const std::string& header, const key_values& keys) {
     std::string text = "[" + header + "]\n";
-    for (const auto& [key, value] : keys) text += key + " = " + value + "\n";
+    for (const auto& [key, value] : keys) text.append(key).append(" = ").append(value).append("\n");
     return text;
 }
 
@@ -215,7 +215,7 @@ std::string writer::object_value(const std::shared_ptr<hittable>& object) {
     object_names[key]      = name;
     key_values keys        = object_keys(object);
     std::string text       = "[named_objects." + name + "]\n";
-    for (const auto& [k, v] : keys) text += k + " = " + v + "\n";
+    for (const auto& [k, v] : keys) text.append(k).append(" = ").append(v).append("\n");
     object_blocks += "\n" + text;
     return toml_string(name);
 }

@@ -201,7 +201,7 @@ std::optional<std::string> fields::word_if(std::string_view key,
                                            const std::vector<std::string_view>& allowed) {
     const toml::node* value = find(key);
     if (!value) return std::nullopt;
-    const std::optional<std::string> word = value->value<std::string>();
+    std::optional<std::string> word = value->value<std::string>();
     if (value->is_string())
         for (std::string_view w : allowed)
             if (*word == w) return word;
@@ -239,6 +239,5 @@ void fields::allow(std::string what, const std::vector<std::string_view>& keys) 
     }
     // [exercise fields::allow end]
 }
-
 
 }  // namespace rt

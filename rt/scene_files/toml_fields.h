@@ -89,7 +89,6 @@ class fields {
     // Any string.
     std::optional<std::string> text_if(std::string_view key);
 
-
     // Refuses at this table: "<what>: message".
     [[noreturn]] void refuse(const std::string& message) const;
 
