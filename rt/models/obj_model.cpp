@@ -1,5 +1,6 @@
 #include "rt/models/obj_model.h"
 
+#include <algorithm>
 #include <tiny_obj_loader.h>
 
 #include <array>
@@ -74,7 +75,8 @@ std::vector<std::pair<std::string_view, std::size_t>> words(std::string_view lin
 
 // Counts what the text declares, and refuses more than a mesh may hold before anything is
 // allocated for it: the first pass over the text.
-declared count_elements(std::string_view text, const std::string& name) {
+declared count_elements(std::string_view text, const std::string& name,
+                        std::size_t triangle_limit) {
     declared d;
     for_each_line(text, [&](std::size_t number, std::string_view line, std::size_t) {
         const auto w = words(line);
@@ -103,9 +105,8 @@ declared count_elements(std::string_view text, const std::string& name) {
         if (d.positions > triangle_mesh::max_vertices)
             refuse_at(name, number, 1,
                       "more than " + std::to_string(triangle_mesh::max_vertices) + " vertices");
-        if (d.triangles > triangle_mesh::max_triangles)
-            refuse_at(name, number, 1,
-                      "more than " + std::to_string(triangle_mesh::max_triangles) + " triangles");
+        if (d.triangles > triangle_limit)
+            refuse_at(name, number, 1, "more than " + std::to_string(triangle_limit) + " triangles");
     });
     return d;
 }
@@ -200,7 +201,7 @@ std::string first_line(const std::string& text) {
 
 }  // namespace
 
-obj_model parse_obj(const std::string& raw, const std::string& name) {
+obj_model parse_obj(const std::string& raw, const std::string& name, std::size_t triangle_limit) {
     std::string_view text = raw;
     if (text.size() >= 2 &&
         ((text[0] == '\xff' && text[1] == '\xfe') || (text[0] == '\xfe' && text[1] == '\xff')))
@@ -210,7 +211,7 @@ obj_model parse_obj(const std::string& raw, const std::string& name) {
                          ": not a text file (an OBJ model is ASCII or UTF-8; UTF-16 is not read)");
     if (text.substr(0, 3) == "\xef\xbb\xbf") text.remove_prefix(3);  // a UTF-8 byte order mark
 
-    const declared d = count_elements(text, name);
+    const declared d = count_elements(text, name, std::min(triangle_limit, triangle_mesh::max_triangles));
     check_faces(text, d, name);
 
     // tinyobjloader reads the kinds of line below; the others it knows (skin weights vw,
@@ -351,7 +352,7 @@ obj_model parse_obj(const std::string& raw, const std::string& name) {
     return model;
 }
 
-obj_model read_obj(const std::string& path) {
+obj_model read_obj(const std::string& path, std::size_t triangle_limit) {
     std::error_code error;
     if (std::filesystem::is_directory(path, error)) refuse(path, "a folder, not a model file");
     const std::uintmax_t size = std::filesystem::file_size(path, error);
@@ -362,7 +363,7 @@ obj_model read_obj(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     std::string text(static_cast<std::size_t>(size), '\0');
     if (!in.read(text.data(), std::streamsize(size))) refuse(path, "cannot read the model");
-    return parse_obj(text, path);
+    return parse_obj(text, path, triangle_limit);
 }
 
 std::shared_ptr<triangle_mesh> mesh_of_model(obj_model model, std::shared_ptr<material> mat,

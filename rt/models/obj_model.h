@@ -38,10 +38,15 @@ inline constexpr std::uintmax_t max_obj_bytes = std::uintmax_t(1) << 30;
 
 // The model in `text`, named `name` in messages. Throws user_error ("NAME: ...") for what is
 // refused.
-obj_model parse_obj(const std::string& text, const std::string& name);
+// A model declaring more than `triangle_limit` triangles (after triangulation) is refused before
+// tinyobjloader reads it; the limit is at most triangle_mesh::max_triangles (a scene with
+// several models passes what is left of its own budget).
+obj_model parse_obj(const std::string& text, const std::string& name,
+                    std::size_t triangle_limit = triangle_mesh::max_triangles);
 
 // The model in the file at `path` (read whole, after its size is checked).
-obj_model read_obj(const std::string& path);
+obj_model read_obj(const std::string& path,
+                   std::size_t triangle_limit = triangle_mesh::max_triangles);
 
 // The model as a mesh of `mat`; its warnings, and the count of degenerate triangles the mesh
 // dropped, added to `warnings`, each starting with `name`. Refused when no triangle is left.

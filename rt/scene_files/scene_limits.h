@@ -1,6 +1,7 @@
 // What a scene file may hold, checked before anything is allocated for it. Chapter 19.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 namespace rt::scene_limits {
@@ -13,6 +14,9 @@ inline constexpr std::uintmax_t max_file_bytes = std::uintmax_t(1) << 27;
 inline constexpr int max_nesting = 64;
 // Steps of one object's transform list.
 inline constexpr int max_transform_steps = 64;
+// The triangles of all of a scene's meshes together: as many as one mesh may hold (chapter 18),
+// each model refused before it is read when it declares more than what is left.
+inline constexpr std::size_t max_triangles = std::size_t(1) << 27;
 // Every coordinate, length, radius and radiance: the book's largest is the ground sphere's 1000;
 // a million times its unit keeps the products of a sphere test (lengths to the fourth power)
 // far inside float's range, as chapter 18's float build needs.

@@ -97,8 +97,8 @@ std::vector<std::string_view> material_keys(const std::string& type) {
 
 class reader {
   public:
-    reader(const toml::table& file_root, fs::path file_folder)
-        : root(file_root), folder(std::move(file_folder)) {}
+    reader(const toml::table& file_root, fs::path file_folder, std::size_t triangle_limit)
+        : root(file_root), folder(std::move(file_folder)), triangles_left(triangle_limit) {}
 
     described_scene read();
 
@@ -147,6 +147,7 @@ class reader {
     std::map<std::string, built_object, std::less<>> objects;
     std::vector<std::string> being_built;  // names whose definitions are being read
     int depth = 0;                         // tables inside tables being read
+    std::size_t triangles_left;            // of the scene's budget, for the meshes still to read
 };
 
 // Counts one level of nesting while it lives; refuses beyond the limit.
@@ -612,7 +613,8 @@ built_object reader::mesh(fields& f) {
     std::vector<std::string> warnings;
     std::shared_ptr<triangle_mesh> made;
     try {
-        obj_model model = read_obj(path);
+        obj_model model = read_obj(path, triangles_left);
+        triangles_left -= model.mesh.triangles.size();
         if (shading == "flat") model.mesh.normals.clear();
         if (shading == "smooth" && model.mesh.normals.empty()) add_smooth_normals(model.mesh);
         if (fit) model.mesh = fitted(std::move(model.mesh), fit->first, fit->second);
@@ -672,7 +674,7 @@ std::string reader::resolved(const std::string& path) const {
 }  // namespace
 
 described_scene parse_scene_text(std::string_view text, const std::string& file_name,
-                                 const std::string& folder) {
+                                 const std::string& folder, std::size_t triangle_limit) {
     if (text.size() > scene_limits::max_file_bytes)
         throw user_error("scene file '" + file_name + "' must be at most " +
                          std::to_string(scene_limits::max_file_bytes) + " bytes, got " +
@@ -685,7 +687,7 @@ described_scene parse_scene_text(std::string_view text, const std::string& file_
     } catch (const toml::parse_error& e) {
         refuse_at(e.source(), std::string(e.description()));
     }
-    return reader(root, folder).read();
+    return reader(root, folder, triangle_limit).read();
 }
 
 described_scene read_scene_file(const std::string& path) {

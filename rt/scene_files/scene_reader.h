@@ -9,10 +9,12 @@
 // relative to the scene file's folder). Nothing is rendered or written after a refusal.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 
 #include "rt/scene_files/described_scene.h"
+#include "rt/scene_files/scene_limits.h"
 
 namespace rt {
 
@@ -24,8 +26,10 @@ inline constexpr int scene_file_format = 1;
 described_scene read_scene_file(const std::string& path);
 
 // The scene in `text`, named `file_name` in messages, its texture and model files found
-// relative to `folder` (the fuzz target and the tests read text this way).
+// relative to `folder` (the fuzz target and the tests read text this way). Its meshes may hold
+// `triangle_limit` triangles together (tests pass a smaller budget).
 described_scene parse_scene_text(std::string_view text, const std::string& file_name,
-                                 const std::string& folder);
+                                 const std::string& folder,
+                                 std::size_t triangle_limit = scene_limits::max_triangles);
 
 }  // namespace rt

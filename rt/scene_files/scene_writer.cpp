@@ -1,7 +1,5 @@
 #include "rt/scene_files/scene_writer.h"
 
-#include <toml++/toml.h>
-
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -36,6 +34,7 @@
 #include "rt/scene/hittable_list.h"
 #include "rt/scene_files/scene_reader.h"
 #include "rt/scene_files/scene_words.h"
+#include "rt/scene_files/toml_text.h"
 #include "rt/textures/image_texture.h"
 #include "rt/textures/noise_texture.h"
 #include "rt/textures/texture.h"
@@ -66,14 +65,6 @@ namespace fs = std::filesystem;
 std::string vector_text(const vec3& v) {
     return "[" + number_text(double(v.x())) + ", " + number_text(double(v.y())) + ", " +
            number_text(double(v.z())) + "]";
-}
-
-// A TOML string, quoted and escaped by toml++.
-std::string toml_string(const std::string& text) {
-    std::ostringstream out;
-    out << toml::toml_formatter(toml::value<std::string>(text),
-                                toml::format_flags::allow_unicode_strings);
-    return out.str();
 }
 
 // The keys of one table, in the order written.

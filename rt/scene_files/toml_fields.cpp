@@ -5,8 +5,17 @@
 
 #include "rt/core/error.h"
 #include "rt/core/exercise.h"
+#include "rt/scene_files/toml_text.h"
+#include "rt/scene_files/toml_text.h"
 
 namespace rt {
+
+std::string toml_string(const std::string& text) {
+    std::ostringstream out;
+    out << toml::toml_formatter(toml::value<std::string>(text),
+                                toml::format_flags::allow_unicode_strings);
+    return out.str();
+}
 
 std::string place_of(const toml::source_region& where) {
     std::ostringstream place;

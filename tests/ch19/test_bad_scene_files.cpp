@@ -226,3 +226,21 @@ TEST_CASE("a missing or unreadable scene file is named", "[ch19]") {
     CHECK_THAT(refused(fs::temp_directory_path().string()),
                Catch::Contains("is not a regular file"));
 }
+
+TEST_CASE("meshes beyond the scene's triangle budget are refused before they are read", "[ch19]") {
+    // Two bunnies of 3,674 triangles each, in a budget of 5,000: the second model declares more
+    // than the 1,326 left, and is refused at its file's first face beyond them.
+    const std::string assets = fs::path(rt::asset_path("globe.png")).parent_path().string();
+    const std::string bunny =
+        "{ type = \"mesh\", file = \"models/bunny.obj\", material = \"matte\" }";
+    const std::string text = header + matte + "[world]\nobjects = [" + bunny + ", " + bunny + "]\n";
+    std::string message;
+    try {
+        rt::parse_scene_text(text, "bad.toml", assets, 5000);
+    } catch (const rt::user_error& e) {
+        message = e.what();
+    }
+    CHECK(message.rfind("bad.toml:5:", 0) == 0);
+    CHECK_THAT(message, Catch::Contains("more than 1326 triangles"));
+    CHECK_NOTHROW(rt::parse_scene_text(text, "good.toml", assets, 2 * 3674));
+}
