@@ -1,8 +1,8 @@
 #include "rt/models/obj_model.h"
 
-#include <algorithm>
 #include <tiny_obj_loader.h>
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <filesystem>
@@ -106,7 +106,8 @@ declared count_elements(std::string_view text, const std::string& name,
             refuse_at(name, number, 1,
                       "more than " + std::to_string(triangle_mesh::max_vertices) + " vertices");
         if (d.triangles > triangle_limit)
-            refuse_at(name, number, 1, "more than " + std::to_string(triangle_limit) + " triangles");
+            refuse_at(name, number, 1,
+                      "more than " + std::to_string(triangle_limit) + " triangles");
     });
     return d;
 }
@@ -211,7 +212,8 @@ obj_model parse_obj(const std::string& raw, const std::string& name, std::size_t
                          ": not a text file (an OBJ model is ASCII or UTF-8; UTF-16 is not read)");
     if (text.substr(0, 3) == "\xef\xbb\xbf") text.remove_prefix(3);  // a UTF-8 byte order mark
 
-    const declared d = count_elements(text, name, std::min(triangle_limit, triangle_mesh::max_triangles));
+    const declared d =
+        count_elements(text, name, std::min(triangle_limit, triangle_mesh::max_triangles));
     check_faces(text, d, name);
 
     // tinyobjloader reads the kinds of line below; the others it knows (skin weights vw,

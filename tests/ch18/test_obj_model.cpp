@@ -680,12 +680,14 @@ TEST_CASE(
     CHECK(warnings.empty());
 }
 
-TEST_CASE("parse_obj: a model declaring more triangles than the limit given is refused before it "
-          "is read, at the face that passes it",
-          "[ch18]") {
+TEST_CASE(
+    "parse_obj: a model declaring more triangles than the limit given is refused before it "
+    "is read, at the face that passes it",
+    "[ch18]") {
     // Two triangles and a quad (two more after triangulation): four in all.
-    const std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n"
-                             "f 1 2 3\nf 2 4 3\nf 1 2 4 3\n";
+    const std::string text =
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n"
+        "f 1 2 3\nf 2 4 3\nf 1 2 4 3\n";
     CHECK(rt::parse_obj(text, "m.obj", 4).mesh.triangles.size() == 4);
     std::string message;
     try {
