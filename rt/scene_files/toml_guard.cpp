@@ -2,6 +2,15 @@
 
 namespace rt {
 
+namespace {
+
+// toml++ asks whether the character after a backslash is whitespace (a line-ending backslash);
+// no escape starts with a character outside ASCII anyway.
+constexpr const char* escaped_non_ascii =
+    "a backslash before a character outside ASCII in a string (no escape starts so)";
+
+}  // namespace
+
 std::optional<toml_guard_finding> toml_guard(std::string_view text) {
     enum class state { between, comment, basic, literal, multi_basic, multi_literal };
     state at = state::between;
@@ -48,6 +57,9 @@ std::optional<toml_guard_finding> toml_guard(std::string_view text) {
             case state::comment:
                 break;
             case state::basic:
+                if (text[i] == '\\' && i + 1 < text.size() &&
+                    static_cast<unsigned char>(text[i + 1]) >= 0x80)
+                    return toml_guard_finding{line, column, escaped_non_ascii};
                 if (text[i] == '\\' && i + 1 < text.size() && text[i + 1] != '\n')
                     ++i, ++column;
                 else if (text[i] == '"')
@@ -71,6 +83,8 @@ std::optional<toml_guard_finding> toml_guard(std::string_view text) {
                     while (j < text.size() &&
                            (text[j] == ' ' || text[j] == '\t' || text[j] == '\r'))
                         ++j;
+                    if (j < text.size() && static_cast<unsigned char>(text[j]) >= 0x80)
+                        return toml_guard_finding{line, column, escaped_non_ascii};
                     if (j < text.size() && text[j] == '\n')
                         after_line_end_backslash = true;
                     else if (j < text.size())

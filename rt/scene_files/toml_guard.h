@@ -5,8 +5,10 @@
 // the shipped library (toml++ issues 190 and 295, fixed upstream after 3.3.0). TOML allows
 // characters outside ASCII only inside strings (quoted keys included) and comments, so a file
 // holding one anywhere else is not TOML anyway; it is refused here, at its line and column,
-// before the library reads it. Inside a multi-line basic string, toml++ asks the same question
-// of the first character after a line-ending backslash: such a character is refused too.
+// before the library reads it. Inside a basic string, toml++ asks the same question of what
+// follows a backslash (blanks, then a line's end, make a line-ending backslash): a character
+// outside ASCII there, right after the backslash or after its blanks or line end, is refused
+// too (no escape starts with one).
 // The scan knows just enough of TOML to tell strings and comments from the rest.
 #pragma once
 

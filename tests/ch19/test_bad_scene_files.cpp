@@ -173,6 +173,9 @@ TEST_CASE("every bad file is refused with its line, column and what was expected
         {"a character outside ASCII after a line-ending backslash",
          header + "s = \"\"\"\\\n\xc2\xa7\"\"\"\n",
          "bad.toml:3:1: ", "a character outside ASCII right after a line-ending backslash"},
+        {"a backslash before a character outside ASCII in a multi-line string",
+         header + "s = \"\"\"\n\\\xc2\xa7\"\"\"\n",
+         "bad.toml:3:1: ", "a backslash before a character outside ASCII in a string"},
         {"a duplicated key (TOML refuses it)", header + "[render]\nwidth = 4\nwidth = 5\n",
          "bad.toml:4:9: ", "cannot redefine existing integer 'width'"},
     };
