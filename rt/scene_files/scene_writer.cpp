@@ -109,6 +109,14 @@ class writer {
     // A texture where a colour may stand: [r, g, b] for a solid colour, else its name.
     std::string texture_value(const std::shared_ptr<texture>& tex, bool colour_allowed);
     std::string relative_path(const std::string& path) const;
+    // A checker's keys: both kinds hold a scale and two textures.
+    template <typename Checker>
+    key_values checker_keys(const char* type, const Checker& checker) {
+        return {{"type", type},
+                {"scale", number_text(double(checker.scale()))},
+                {"even", texture_value(checker.even_texture(), true)},
+                {"odd", texture_value(checker.odd_texture(), true)}};
+    }
 
     std::string folder;
     std::map<const hittable*, int> uses;
@@ -344,16 +352,10 @@ std::string writer::texture_value(const std::shared_ptr<texture>& tex, bool colo
         keys = {{"type", "\"color\""}, {"color", vector_text(solid->color_value())}};
     } else if (const auto* checker = dynamic_cast<const checker_texture*>(key)) {
         kind = "checker";
-        keys = {{"type", "\"checker\""},
-                {"scale", number_text(double(checker->scale()))},
-                {"even", texture_value(checker->even_texture(), true)},
-                {"odd", texture_value(checker->odd_texture(), true)}};
+        keys = checker_keys("\"checker\"", *checker);
     } else if (const auto* sines = dynamic_cast<const sine_checker_texture*>(key)) {
         kind = "checker";
-        keys = {{"type", "\"sine-checker\""},
-                {"scale", number_text(double(sines->scale()))},
-                {"even", texture_value(sines->even_texture(), true)},
-                {"odd", texture_value(sines->odd_texture(), true)}};
+        keys = checker_keys("\"sine-checker\"", *sines);
     } else if (const auto* image = dynamic_cast<const image_texture*>(key)) {
         kind = "image";
         keys = {{"type", "\"image\""},

@@ -187,11 +187,6 @@ std::optional<std::int64_t> fields::integer_if(std::string_view key, std::int64_
     return *n;
 }
 
-std::int64_t fields::integer(std::string_view key, std::int64_t lo, std::int64_t hi) {
-    need(key, "an integer");
-    return *integer_if(key, lo, hi);
-}
-
 std::optional<vec3> fields::vector_if(std::string_view key, double limit) {
     const toml::node* value = find(key);
     if (!value) return std::nullopt;
@@ -245,17 +240,9 @@ std::string fields::word(std::string_view key, const std::vector<std::string_vie
     return *word_if(key, allowed);
 }
 
-std::optional<std::string> fields::text_if(std::string_view key) {
-    const toml::node* value = find(key);
-    if (!value) return std::nullopt;
-    if (!value->is_string())
-        refuse_at(value->source(), std::string(key) + " must be a string, got " + shown(*value));
-    return *value->value<std::string>();
-}
-
 void fields::allow(std::string what, const std::vector<std::string_view>& keys) {
     // [exercise fields::allow begin]
-    describe_as(std::move(what));
+    name = std::move(what);
     for (const auto& [key, value] : tab) {
         bool known = false;
         for (std::string_view k : keys) known = known || k == key.str();

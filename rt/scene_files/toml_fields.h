@@ -57,13 +57,11 @@ class fields {
     fields(const toml::table& table, std::string what);
 
     const toml::table& table() const { return tab; }
-    const std::string& what() const { return name; }
     // The keys this table may have, once its kind is known: refuses the first other key at
     // once ("unknown key 'raduis' in sphere (its keys: ...)"), before a missing key is noticed
-    // (the likely cause of a missing key is a misspelt one). Calls describe_as(what).
+    // (the likely cause of a missing key is a misspelt one). From then on the table is called
+    // `what` in messages ("sphere" rather than "object").
     void allow(std::string what, const std::vector<std::string_view>& keys);
-    // Describes the table anew, once its type is known ("sphere" rather than "object").
-    void describe_as(std::string what) { name = std::move(what); }
 
     // The value of `key`, or null when absent.
     const toml::node* find(std::string_view key);
@@ -75,7 +73,6 @@ class fields {
     std::optional<real> number_if(std::string_view key, double lo, double hi, bool lo_open = false,
                                   bool hi_open = false);
     // An integer in [lo, hi].
-    std::int64_t integer(std::string_view key, std::int64_t lo, std::int64_t hi);
     std::optional<std::int64_t> integer_if(std::string_view key, std::int64_t lo, std::int64_t hi);
     // Three finite numbers, each within [-limit, limit].
     vec3 vector(std::string_view key, double limit);
@@ -86,8 +83,6 @@ class fields {
     std::string word(std::string_view key, const std::vector<std::string_view>& allowed);
     std::optional<std::string> word_if(std::string_view key,
                                        const std::vector<std::string_view>& allowed);
-    // Any string.
-    std::optional<std::string> text_if(std::string_view key);
 
     // Refuses at this table: "<what>: message".
     [[noreturn]] void refuse(const std::string& message) const;
