@@ -1,5 +1,7 @@
 #include "rt/scene_files/toml_guard.h"
 
+#include <cctype>
+
 namespace rt {
 
 namespace {
@@ -16,7 +18,15 @@ std::optional<toml_guard_finding> toml_guard(std::string_view text) {
     state at = state::between;
     int line = 1, column = 0;
     bool after_line_end_backslash = false;  // in a multi-line basic string, trimming blanks
-    auto starts                   = [&](std::size_t i, std::string_view what) {
+    // toml++ reads a value that starts with a digit or a sign (a number or a date) up to a
+    // comma, a bracket, a brace, '#' or the line's end (past a blank after a date), whatever
+    // stands there: a quote in such a run opens no string. To know where a value starts, the
+    // scan follows the brackets: '[' an array, '{' an inline table, 'h' a table header.
+    std::string open;
+    bool value_position = false;  // after '=', or after '[' or ',' in an array
+    bool in_number = false, quote_in_number = false;
+    bool line_blank = true;  // nothing but blanks yet on this line, outside strings
+    auto starts     = [&](std::size_t i, std::string_view what) {
         return text.substr(i, what.size()) == what;
     };
     std::size_t i = 0;
@@ -35,14 +45,49 @@ std::optional<toml_guard_finding> toml_guard(std::string_view text) {
             column = 0;
             if (at == state::comment || at == state::basic || at == state::literal)
                 at = state::between;  // a one-line string cut by its line: toml++ refuses it
+            if (at == state::between) in_number = quote_in_number = false, line_blank = true;
             continue;
         }
         switch (at) {
-            case state::between:
+            case state::between: {
                 if (!ascii)
-                    return toml_guard_finding{line, column,
-                                              "a character outside ASCII stands outside a string "
-                                              "or a comment (TOML allows it only inside quotes)"};
+                    return toml_guard_finding{
+                        line, column,
+                        quote_in_number
+                            ? "a character outside ASCII in a value that starts as a number "
+                              "or a date (a quote there opens no string)"
+                            : "a character outside ASCII stands outside a string or a "
+                              "comment (TOML allows it only inside quotes)"};
+                const char c = text[i];
+                if (c == ' ' || c == '\t' || c == '\r') break;
+                const bool was_blank = line_blank;
+                line_blank           = false;
+                if (in_number) {
+                    if (c != ',' && c != ']' && c != '}' && c != '#') {
+                        quote_in_number = quote_in_number || c == '"' || c == '\'';
+                        break;
+                    }
+                    in_number = quote_in_number = false;
+                }
+                const bool starts_value = value_position;
+                value_position          = false;
+                if (c == '=') {
+                    value_position = true;
+                } else if (c == '[') {
+                    const bool header =
+                        (open.empty() && was_blank) || (!open.empty() && open.back() == 'h');
+                    open.push_back(header ? 'h' : '[');
+                    value_position = !header;
+                } else if (c == '{') {
+                    open.push_back('{');
+                } else if (c == ']' || c == '}') {
+                    if (!open.empty()) open.pop_back();
+                } else if (c == ',') {
+                    value_position = !open.empty() && open.back() == '[';
+                } else if (starts_value &&
+                           (std::isdigit(static_cast<unsigned char>(c)) || c == '+' || c == '-')) {
+                    in_number = true;
+                }
                 if (text[i] == '#')
                     at = state::comment;
                 else if (starts(i, "\"\"\""))
@@ -54,6 +99,7 @@ std::optional<toml_guard_finding> toml_guard(std::string_view text) {
                 else if (text[i] == '\'')
                     at = state::literal;
                 break;
+            }
             case state::comment:
                 break;
             case state::basic:

@@ -9,6 +9,8 @@
 // follows a backslash (blanks, then a line's end, make a line-ending backslash): a character
 // outside ASCII there, right after the backslash or after its blanks or line end, is refused
 // too (no escape starts with one).
+// toml++ also reads a value that starts with a digit or a sign (a number, a date) up to its
+// terminator, quotes included, so a quote there opens no string for the scan either.
 // The scan knows just enough of TOML to tell strings and comments from the rest.
 #pragma once
 
