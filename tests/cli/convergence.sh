@@ -3,9 +3,10 @@
 # into a temporary folder, then every method at 1..8 spp of --scene ch10 at 32 px.
 #   convergence.sh CH17_FAST_TRAVERSAL      (the program tools/convergence renders with)
 # Checks: the reference and its record are written, and a normal run leaves them untouched; the
-# CSV has its columns, one curve per method with spp doubling from 1; its RMSE of mis + sobol at
-# 8 spp equals one computed here, independently, from the same render; the plot is a PNG; the
-# table has one row per method; a missing reference and a bad method are refused (exit code 2,
+# CSV has its columns, one curve per method with spp doubling from 1; its RMSE, relative MSE,
+# display RMSE and share of error in the brightest 1 % of pixels of mis + sobol at 8 spp equal
+# those computed here, independently, from the same render; the plot and the error maps are
+# PNGs; the table has one row per method and a speed-up by each measure; a missing reference and a bad method are refused (exit code 2,
 # one line, nothing written). Without matplotlib or numpy it fails at once, saying so: the test
 # command installs them (tools/install-deps), so a skip would only hide a broken install.
 set -euo pipefail
@@ -68,7 +69,8 @@ def fail(message):
     sys.exit(1)
 
 columns = ["scene", "integrator", "sampler", "spp", "seconds", "rmse", "relmse", "rays",
-           "samples_per_second"]
+           "samples_per_second", "render_seconds", "cpu_seconds", "display_rmse",
+           "bright_share"]
 with open("out/ch10.csv") as f:
     reader = csv.DictReader(f)
     if reader.fieldnames[:len(columns)] != columns:
@@ -92,19 +94,44 @@ for m, curve in methods.items():
 ref, img = pfm.read("refs/ch10.pfm").pixels, pfm.read("mis8.pfm").pixels
 rmse = math.sqrt(sum((a - b) ** 2 for a, b in zip(img, ref)) / len(ref))
 relmse = sum((a - b) ** 2 / (b * b + 0.01) for a, b in zip(img, ref)) / len(ref)
+
+def shown(v):  # clamped and sRGB-encoded, as a screen shows it
+    v = min(max(v, 0.0), 1.0)
+    return 12.92 * v if v <= 0.0031308 else 1.055 * v ** (1 / 2.4) - 0.055
+
+display = math.sqrt(sum((shown(a) - shown(b)) ** 2 for a, b in zip(img, ref)) / len(ref))
+# The brightest 1 % of the reference's pixels (32 x 18 = 576: 6 pixels), by the channels' mean.
+pixels = len(ref) // 3
+brightness = [sum(ref[3 * p:3 * p + 3]) / 3 for p in range(pixels)]
+order = sorted(range(pixels), key=lambda p: brightness[p])
+bright = set(order[-math.ceil(0.01 * pixels):])
+square = [sum((img[3 * p + c] - ref[3 * p + c]) ** 2 for c in range(3)) for p in range(pixels)]
+share = sum(square[p] for p in bright) / sum(square)
 row = methods[("mis", "sobol")][-1]
 for what, mine, theirs in (("RMSE", rmse, float(row["rmse"])),
-                           ("relative MSE", relmse, float(row["relmse"]))):
+                           ("relative MSE", relmse, float(row["relmse"])),
+                           ("display RMSE", display, float(row["display_rmse"])),
+                           ("share of error in the brightest 1 %", share,
+                            float(row["bright_share"]))):
     if abs(mine - theirs) > 1e-4 * mine:
         fail(f"{what} of mis + sobol at 8 spp: the CSV says {theirs}, computed here {mine}")
 
-with open("out/ch10.png", "rb") as f:
-    if f.read(8) != b"\x89PNG\r\n\x1a\n":
-        fail("out/ch10.png is not a PNG")
+for png in ("out/ch10.png", "out/ch10-error-maps.png"):
+    with open(png, "rb") as f:
+        if f.read(8) != b"\x89PNG\r\n\x1a\n":
+            fail(f"{png} is not a PNG")
 with open("out/ch10.md") as f:
     table = [line for line in f if line.startswith("| ") and " + " in line.split("|")[1]]
 names = sorted(line.split("|")[1].strip() for line in table)
 if names != sorted(f"{i} + {s}" for i, s in expected):
     fail(f"the table must have one row per method, got {names}")
+header = next(line for line in open("out/ch10.md") if line.startswith("| method"))
+for measure in ("speed-up by relative MSE", "speed-up by display RMSE",
+                "error in the brightest 1 %"):
+    if measure not in header:
+        fail(f"the table must have a column '{measure}', got: {header.strip()}")
+baseline = next(line for line in table if line.split("|")[1].strip() == "path + independent")
+if baseline.split("|")[8].strip() != "1.0x" or baseline.split("|")[9].strip() != "1.0x":
+    fail(f"the baseline's speed-ups by relative MSE and display RMSE must be 1.0x: {baseline}")
 print("convergence: CSV, plot and table as expected")
 EOF
