@@ -35,8 +35,9 @@ int main(int argc, char** argv) {
     cli.add_choice("--scene", which, names,
                    "ch13 (book 2's final scene), ch14 (book 3's Cornell box), or chNN / "
                    "chNN-NAME: an earlier chapter's scene");
-    cli.add_choice("--integrator", integrator, {"mis", "light", "path"},
-                   "mis (chapter 15), light (chapter 14), or path (chapter 03)");
+    cli.add_choice("--integrator", integrator, {"mis", "mis-expected", "light", "path"},
+                   "mis (chapter 15), mis-expected (mis, with the light seen through media "
+                   "counted by its exact transmittance), light (chapter 14), or path (chapter 03)");
     cli.add_choice("--sampler", samples, {"sobol", "independent"},
                    "sobol (chapter 16), or independent (chapter 01)");
     cli.add_text("--texture", texture_file, "Image for globes");
@@ -45,6 +46,8 @@ int main(int argc, char** argv) {
             which == "ch14" ? book3_cornell_box() : scene_by_name(which, texture_file));
         if (samples == "sobol") scene.settings.make_sampler = rt::sobol_sampler::make;
         if (integrator == "mis") return rt::mis_trace(scene);
+        if (integrator == "mis-expected")
+            return rt::mis_trace(scene, rt::light_through_media::expected);
         return integrator == "light" ? rt::mixture_trace(scene) : rt::path_trace(scene);
     });
 }

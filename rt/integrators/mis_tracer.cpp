@@ -33,6 +33,26 @@ real power_heuristic(real pdf_taken, real pdf_other) {
 mis_tracer::mis_tracer(std::shared_ptr<const hittable> w, const background& b)
     : world(given(std::move(w))), sky(b), lights(*world, b) {}
 
+// [ch17 begin]
+mis_tracer::mis_tracer(std::shared_ptr<const hittable> w, const background& b,
+                       light_through_media how)
+    : mis_tracer(std::move(w), b) {
+    through_media = how;
+}
+
+color mis_tracer::expected_light(const ray& r, const hittable*& shape, hit_record& on_light) const {
+    shape = lights.first_light_on(r, interval(0, infinity), on_light);
+    if (!shape) return color(0, 0, 0);
+    const color emitted = on_light.mat->emitted(r, on_light);
+    if (is_black(emitted)) return emitted;
+    count_ray();
+    // Up to the light, not including it: the interval is open, so the light's own hit at
+    // on_light.t does not block.
+    const real passed = world->transmittance(r, interval(0, on_light.t));
+    return passed * emitted;
+}
+// [ch17 end]
+
 real mis_tracer::visibility(const ray& r_in, const hit_record& rec,
                             const light_sample& towards) const {
     ray shadow = spawn_ray(rec, r_in, towards.wi);
@@ -55,6 +75,22 @@ color mis_tracer::radiance(const ray& camera_ray, sampler& s, int max_depth) con
     real material_pdf   = 0;
     point3 last_vertex;
     for (int segment = 0; segment < max_depth; ++segment) {
+        // [ch17 begin]
+        // The light met along this segment, in expectation over the media it crosses.
+        const hittable* light_shape = nullptr;
+        hit_record on_light;
+        if (through_media == light_through_media::expected) {
+            const color expected = expected_light(r, light_shape, on_light);
+            if (!is_black(expected)) {
+                real w = 1;
+                if (weigh_emission)
+                    w = power_heuristic(
+                        material_pdf,
+                        lights.pdf_of_hit(last_vertex, unit_vector(r.direction()), on_light));
+                radiance += throughput * w * expected;
+            }
+        }
+        // [ch17 end]
         hit_record rec;
         count_ray();
         if (!world->hit(r, interval(0, infinity), rec)) {
@@ -67,6 +103,11 @@ color mis_tracer::radiance(const ray& camera_ray, sampler& s, int max_depth) con
         }
         const material& surface = *rec.mat;
         color emitted           = surface.emitted(r, rec);
+        // [ch17 begin]
+        // Already counted, in expectation, if this is the light expected_light found.
+        if (light_shape && rec.object == light_shape && light_set::same_point(r, rec, on_light))
+            emitted = color(0, 0, 0);
+        // [ch17 end]
         if (!is_black(emitted)) {
             // [exercise mis_tracer::hit_weight begin]
             real w = 1;
@@ -127,5 +168,11 @@ color mis_tracer::radiance(const ray& camera_ray, sampler& s, int max_depth) con
 render_job mis_trace(const scene& sc) {
     return {sc.cam, std::make_shared<mis_tracer>(sc.world, sc.sky), sc.settings};
 }
+
+// [ch17 begin]
+render_job mis_trace(const scene& sc, light_through_media through_media) {
+    return {sc.cam, std::make_shared<mis_tracer>(sc.world, sc.sky, through_media), sc.settings};
+}
+// [ch17 end]
 
 }  // namespace rt

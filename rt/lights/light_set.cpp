@@ -20,6 +20,7 @@ class light_finder : public part_visitor {
   public:
     std::vector<std::unique_ptr<light>> found;
     std::vector<const hittable*> shapes;
+    std::vector<const hittable*> single_shapes;  // [ch17] of the lights of one sphere or quad
 
     void visit(const hittable& part) override {
         // Exactly these types: a moving_sphere derives from neither, and its light moves.
@@ -55,6 +56,7 @@ class light_finder : public part_visitor {
         // A shape placed twice in the same list is still one light.
         if (std::find(shapes.begin(), shapes.end(), &shape) != shapes.end()) return;
         shapes.push_back(&shape);
+        single_shapes.push_back(&shape);  // [ch17]
         found.push_back(std::move(l));
     }
 };
@@ -74,6 +76,7 @@ light_set::light_set(const hittable& world, const background& background_sky) {
         lights.push_back(std::make_unique<sky_light>(background_sky));
         sky = lights.back().get();
     }
+    single_shapes = std::move(finder.single_shapes);  // [ch17]
 }
 
 bool light_set::sample(const point3& ref, real pick, sample2 u, light_sample& out) const {
@@ -98,13 +101,32 @@ real light_set::pdf_of_hit(const point3& ref, const vec3& wi, const hit_record& 
     // instance is hit as the same object. Only the light where it stands itself is aimed at, so
     // the hit counts as that light only if the shape, asked directly, is hit at the same point.
     hit_record direct;
-    if (!hit.object->hit(ray(ref, wi), interval(0, infinity), direct)) return 0;
-    real apart = (direct.p - hit.p).length();
-    if (!(apart <=
-          4 * (direct.p_error + hit.p_error) + spawn_offset_scale * (hit.p - ref).length()))
-        return 0;
+    const ray r(ref, wi);
+    if (!hit.object->hit(r, interval(0, infinity), direct)) return 0;
+    if (!same_point(r, hit, direct)) return 0;
     return found->second->pdf_at(ref, wi, direct) / real(lights.size());
 }
+
+bool light_set::same_point(const ray& r, const hit_record& hit, const hit_record& direct) {
+    real apart = (direct.p - hit.p).length();
+    return apart <=
+           4 * (direct.p_error + hit.p_error) + spawn_offset_scale * (hit.p - r.origin()).length();
+}
+
+// [ch17 begin]
+const hittable* light_set::first_light_on(const ray& r, interval ray_t, hit_record& hit) const {
+    const hittable* first = nullptr;
+    hit_record candidate;
+    for (const hittable* shape : single_shapes) {
+        if (shape->hit(r, ray_t, candidate)) {
+            first     = shape;
+            hit       = candidate;
+            ray_t.max = candidate.t;
+        }
+    }
+    return first;
+}
+// [ch17 end]
 
 real light_set::pdf_of_sky(const point3& ref, const vec3& wi) const {
     return sky ? sky->pdf(ref, wi) / real(lights.size()) : 0;

@@ -58,9 +58,21 @@ class light_set {
     // The same for a ray that escaped to the sky.
     real pdf_of_sky(const point3& ref, const vec3& wi) const;
 
+    // [ch17 begin]
+    // The first of the lights made of one sphere or one quad that r meets within ray_t, asked
+    // of those shapes alone (whatever else stands in the way): the shape, with its hit in `hit`,
+    // or nullptr. Lights of many parts (a mesh's triangles) and the sky are not searched.
+    const hittable* first_light_on(const ray& r, interval ray_t, hit_record& hit) const;
+    // [ch17 end]
+
+    // Whether `hit`, made along r, is the same point of `shape` as `direct`, the shape's own
+    // hit along r: false for a copy of the shape that an instance placed elsewhere.
+    static bool same_point(const ray& r, const hit_record& hit, const hit_record& direct);
+
   private:
     std::vector<std::unique_ptr<light>> lights;
     std::unordered_map<const hittable*, const light*> light_of_shape;
+    std::vector<const hittable*> single_shapes;  // [ch17] of the lights of one sphere or quad
     const light* sky = nullptr;
 };
 
