@@ -80,6 +80,7 @@ methods = {}
 for r in rows:
     methods.setdefault((r["integrator"], r["sampler"]), []).append(r)
 expected = {(i, s) for i in ("path", "light", "mis") for s in ("independent", "sobol")}
+expected.add(("mis-expected", "sobol"))
 if set(methods) != expected:
     fail(f"CSV must hold one curve per method, got {sorted(methods)}")
 for m, curve in methods.items():
