@@ -4,7 +4,8 @@
 #   convergence.sh CH17_FAST_TRAVERSAL      (the program tools/convergence renders with)
 # Checks: the reference and its record are written, and a normal run leaves them untouched; the
 # CSV has its columns, one curve per method with spp doubling from 1; its RMSE, relative MSE,
-# display RMSE and share of error in the brightest 1 % of pixels of mis + sobol at 8 spp equal
+# display RMSE and shares of error in the brightest 1 % of pixels and in those over white of mis +
+# sobol at 8 spp equal
 # those computed here, independently, from the same render; the plot and the error maps are
 # PNGs; the table has one row per method and a speed-up by each measure; a missing reference and a bad method are refused (exit code 2,
 # one line, nothing written). Without matplotlib or numpy it fails at once, saying so: the test
@@ -70,7 +71,7 @@ def fail(message):
 
 columns = ["scene", "integrator", "sampler", "spp", "seconds", "rmse", "relmse", "rays",
            "samples_per_second", "render_seconds", "cpu_seconds", "display_rmse",
-           "bright_share"]
+           "bright_share", "over_white_share"]
 with open("out/ch10.csv") as f:
     reader = csv.DictReader(f)
     if reader.fieldnames[:len(columns)] != columns:
@@ -108,12 +109,15 @@ order = sorted(range(pixels), key=lambda p: brightness[p])
 bright = set(order[-math.ceil(0.01 * pixels):])
 square = [sum((img[3 * p + c] - ref[3 * p + c]) ** 2 for c in range(3)) for p in range(pixels)]
 share = sum(square[p] for p in bright) / sum(square)
+over_white = sum(square[p] for p in range(pixels) if brightness[p] > 1) / sum(square)
 row = methods[("mis", "sobol")][-1]
 for what, mine, theirs in (("RMSE", rmse, float(row["rmse"])),
                            ("relative MSE", relmse, float(row["relmse"])),
                            ("display RMSE", display, float(row["display_rmse"])),
                            ("share of error in the brightest 1 %", share,
-                            float(row["bright_share"]))):
+                            float(row["bright_share"])),
+                           ("share of error over white", over_white,
+                            float(row["over_white_share"]))):
     if abs(mine - theirs) > 1e-4 * mine:
         fail(f"{what} of mis + sobol at 8 spp: the CSV says {theirs}, computed here {mine}")
 
@@ -128,7 +132,7 @@ if names != sorted(f"{i} + {s}" for i, s in expected):
     fail(f"the table must have one row per method, got {names}")
 header = next(line for line in open("out/ch10.md") if line.startswith("| method"))
 for measure in ("speed-up by relative MSE", "speed-up by display RMSE",
-                "error in the brightest 1 %"):
+                "error in the brightest 1 %", "error in pixels over white"):
     if measure not in header:
         fail(f"the table must have a column '{measure}', got: {header.strip()}")
 baseline = next(line for line in table if line.split("|")[1].strip() == "path + independent")
