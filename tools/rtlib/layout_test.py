@@ -20,7 +20,6 @@ what changes the whole picture (gamma, a brightness scale, a missing light, wron
 not a mistake in one small sphere.
 """
 import numpy as np
-from scipy import stats
 
 FAMILY_ALARM = 1e-3
 REGIONS = ("the whole image", "the top third", "the middle third", "the bottom third")
@@ -42,6 +41,9 @@ class Verdict:
         self.t = (student - mean) / (sd * np.sqrt(1 + 1 / k))
         self.ratio = student / np.maximum(mean, 1e-12)
         self.spread = sd / np.maximum(np.abs(mean), 1e-12)
+        # scipy is imported here: it takes most of a plain check's start-up, which needs none
+        # of it.
+        from scipy import stats
         self.limit = float(stats.t.ppf(1 - FAMILY_ALARM / (2 * self.t.size), k - 1))
         a = np.abs(np.nan_to_num(self.t, nan=np.inf))
         self.worst_at = tuple(int(i) for i in np.unravel_index(int(np.argmax(a)), a.shape))
