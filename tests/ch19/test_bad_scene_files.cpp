@@ -13,6 +13,7 @@
 #include "rt/program/asset_path.h"
 #include "rt/scene_files/scene_limits.h"
 #include "rt/scene_files/scene_reader.h"
+#include "test_helpers.h"
 
 namespace {
 
@@ -205,7 +206,8 @@ TEST_CASE("objects nested beyond the limit are refused, not followed", "[ch19]")
 }
 
 TEST_CASE("a file too large is refused before it is read", "[ch19]") {
-    const fs::path path = fs::temp_directory_path() / "ch19_too_large.toml";
+    const rt_test::temp_folder folder("ch19", "too_large");
+    const fs::path path = folder.file("scene.toml");
     {
         std::ofstream out(path);
         out << "format = 1\n";
@@ -218,7 +220,6 @@ TEST_CASE("a file too large is refused before it is read", "[ch19]") {
     } catch (const rt::user_error& e) {
         message = e.what();
     }
-    fs::remove(path);
     CHECK_THAT(message, Catch::Contains(
                             "must be at most " + std::to_string(rt::scene_limits::max_file_bytes) +
                             " bytes, got " + std::to_string(rt::scene_limits::max_file_bytes + 1)));
