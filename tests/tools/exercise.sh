@@ -167,6 +167,11 @@ case_refuses_unknown_exercise() {
         "$chapter" no_such
 }
 
+case_refuses_no_verify_workers() {
+    expect_refusal refuses_no_verify_workers "--workers must be at least 1, got 0" verify \
+        --workers 0 "$chapter"
+}
+
 cases=("$@")
 [ ${#cases[@]} -eq 0 ] && mapfile -t cases < <(declare -F | awk '{print $3}' | sed -n 's/^case_//p')
 for case in "${cases[@]}"; do
