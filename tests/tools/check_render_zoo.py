@@ -32,6 +32,7 @@ IMAGE_LEVEL = {
     "gamma-applied-twice": "gamma applied twice",
     "image-upside-down": "upside down",
     "film-height-times-aspect": "not the scene's aspect ratio",
+    "sobol-one-scramble-for-every-pixel": "neighbouring pixels share their errors",
 }
 
 
