@@ -69,12 +69,15 @@ command_line::command_line(std::string program_name)
     cli->add_option("--threads", flags.threads, "Worker threads; 0 = all cores")
         ->check(integer_in(0, 1024))
         ->capture_default_str();
-    cli->add_option("--out", outputs.images, "Output image, .png or .pfm; may repeat")
+    cli->add_option("--out", outputs.images, "Output image, .png, .pfm or .exr; may repeat")
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
-        ->check(output_file({".png", ".pfm"}));
+        ->check(output_file({".png", ".pfm", ".exr"}));
+    cli->add_flag("--exr-half", outputs.exr_half,
+                  "Write the .exr images of --out in 16-bit half floats, not 32-bit (about 3 "
+                  "digits; a value beyond half's largest, 65504, is written as 65504)");
     cli->add_option("--variance-out", outputs.variance,
-                    "Also write the variance of each pixel's mean, as .pfm")
-        ->check(output_file({".pfm"}));
+                    "Also write the variance of each pixel's mean, as .pfm or 32-bit .exr")
+        ->check(output_file({".pfm", ".exr"}));
     cli->add_option("--stats-out", outputs.stats,
                     "Also write the record of the run (time, samples, rays, settings) as .json")
         ->check(stats_file());
@@ -226,7 +229,8 @@ void command_line::write_outputs(const render_result& result,
     // does commit() rename them onto their targets. A failure or an interrupt before that leaves
     // every old file as it was (output_set.h).
     output_set files;
-    for (const auto& path : outputs.images) write_image(files, path, result.mean);
+    const exr_pixels exr = outputs.exr_half ? exr_pixels::half16 : exr_pixels::float32;
+    for (const auto& path : outputs.images) write_image(files, path, result.mean, exr);
     if (!outputs.variance.empty()) write_image(files, outputs.variance, result.mean_variance);
     // Added last, so renamed last: a stats file means every image of the run is complete.
     if (!outputs.stats.empty()) write_stats(files, outputs.stats, make_record());

@@ -86,6 +86,7 @@ class command_line {
     // each pixel's mean (.pfm) and the record of the run (.json), the last two optional.
     struct output_files {
         std::vector<std::string> images;
+        bool exr_half = false;  // the .exr images of `images` in half floats
         std::string variance;
         std::string stats;
     };

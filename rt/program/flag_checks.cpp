@@ -74,7 +74,10 @@ CLI::Validator output_file(const std::vector<std::string>& extensions) {
             if (!problem.empty()) return problem;
             for (const auto& ext : extensions)
                 if (path.size() >= ext.size() && path.ends_with(ext)) return "";
-            return "output '" + path + "' must end in " + extensions.front();
+            std::string names;
+            for (std::size_t k = 0; k < extensions.size(); ++k)
+                names += (k == 0 ? "" : k + 1 == extensions.size() ? " or " : ", ") + extensions[k];
+            return "output '" + path + "' must end in " + names;
         },
         "FILE");
 }

@@ -30,6 +30,8 @@ part last --samples 3:4
 "$exe" --quiet --width 20 --spp 4 --crop "8,0,16,$height" --out wider.pfm --stats-out wider.json
 "$exe" --quiet --width 16 --spp 4 --crop "8,0,16,$height" --out png_only.png \
     --stats-out png_only.json
+"$exe" --quiet --width 16 --spp 4 --crop "8,0,16,$height" --out half_right.exr --exr-half \
+    --stats-out half_right.json
 printf 'not json' >broken.json
 
 # expect_refusal PHRASE MERGE_ARGS...
@@ -56,7 +58,8 @@ expect_refusal "crops must cover the whole 16 x $height image, got none for pixe
 expect_refusal "got seed 1 in 'left.json' and 2 in 'seed2_right.json'" left.json seed2_right.json
 expect_refusal "got scene flags" left.json list_right.json
 expect_refusal "got width 16 in 'left.json' and 20 in 'wider.json'" left.json wider.json
-expect_refusal "must have a .pfm output" left.json png_only.json
+expect_refusal "must have a .pfm or .exr output" left.json png_only.json
+expect_refusal "half_right.exr' holds half floats" left.json half_right.json
 expect_refusal "must not overlap, got 2:4" first.json overlapping.json
 expect_refusal "must cover 0:4, missing 0:2" overlapping.json
 expect_refusal "must cover 0:4, missing 3:4" first.json

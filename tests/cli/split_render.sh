@@ -7,6 +7,8 @@
 #   samples  four sample ranges: merged mean and variance (.pfm) within 1e-6 relative, the
 #            variance also within what the parts' float means carry (compare_pfm.py)
 #   mixed    two crops (the halves) of two sample ranges each: the same bounds
+#   exr      four crops written as OpenEXR only (mean and variance, 32-bit floats): merged
+#            .exr, .pfm and variance equal the single run's byte for byte
 set -euo pipefail
 mode=$1 exe=$2
 export RT_MERGE_PARTS=$3
@@ -27,7 +29,7 @@ a=$((spp / 4)) b=$((spp / 2)) c=$((3 * spp / 4))
 
 # One line per part: its --crop and --samples arguments.
 case $mode in
-crops) printf '%s\n' "--crop 0,0,$x,$y" "--crop $x,0,$width,$y" "--crop 0,$y,$x,$height" \
+crops | exr) printf '%s\n' "--crop 0,0,$x,$y" "--crop $x,0,$width,$y" "--crop 0,$y,$x,$height" \
     "--crop $x,$y,$width,$height" >parts.txt ;;
 samples) printf '%s\n' "--samples 0:$a" "--samples $a:$b" "--samples $b:$c" \
     "--samples $c:$spp" >parts.txt ;;
@@ -40,10 +42,24 @@ esac
 # Four processes at once, one thread each; {=uq=} is the line unquoted (several arguments),
 # {#} the part's number, 1..4.
 mkdir parts
+if [ "$mode" = exr ]; then
+    images="--out parts/{#}.exr --variance-out parts/{#}-variance.exr"
+else
+    images="--out parts/{#}.pfm --out parts/{#}.png --variance-out parts/{#}-variance.pfm"
+fi
 parallel --will-cite --halt now,fail=1 \
-    "\"$exe\" --quiet --threads 1 $* {=uq=} --out parts/{#}.pfm --out parts/{#}.png \
-    --variance-out parts/{#}-variance.pfm --stats-out parts/{#}.json" :::: parts.txt
+    "\"$exe\" --quiet --threads 1 $* {=uq=} $images --stats-out parts/{#}.json" :::: parts.txt
 [ "$(ls parts/*.json | wc -l)" -eq 4 ] || { echo "FAIL: not four parts: $(ls parts)"; exit 1; }
+
+if [ "$mode" = exr ]; then
+    "$exe" --quiet "$@" --out full.exr --variance-out full-variance.exr
+    "$merge" --out merged.exr --out merged.pfm --variance-out merged-variance.exr parts/*.json
+    for f in full.exr full.pfm full-variance.exr; do
+        cmp "$f" "merged${f#full}" || { echo "FAIL: merged ${f#full} differs from $f"; exit 1; }
+    done
+    echo "ok: four crops of $width x $height written as .exr merged equal one run byte for byte"
+    exit 0
+fi
 
 "$merge" --out merged.png --out merged.pfm --variance-out merged-variance.pfm parts/*.json
 

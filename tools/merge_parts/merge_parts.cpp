@@ -1,12 +1,13 @@
 // The pixel work of tools/merge: puts the parts of a split render back together.
 //   merge_parts --size W H --spp N --part X0 Y0 X1 Y1 FROM TO MEAN.pfm VARIANCE.pfm ...
 //               --out FILE... [--variance-out FILE.pfm]
+// (MEAN, VARIANCE and the variance output may be 32-bit .exr files instead of .pfm.)
 // Each part rendered the window [X0, X1) x [Y0, Y1) of a W x H image with the sample indices
 // [FROM, TO) of each pixel (render.h); VARIANCE.pfm is its --variance-out, or "-" for none.
 // tools/merge reads the parts' --stats-out records and calls this; it is not meant for people.
 //
 // Crops: a pixel's value is copied, never recomputed, so the whole image holds the very floats
-// a single run would have written, and image_io encodes them the same way: byte-identical .pfm
+// a single run would have written, and they are encoded the same way: byte-identical .pfm, .exr
 // and .png. Sample ranges of one window: means are combined weighted by their sample counts,
 // variances by Chan, Golub and LeVeque's parallel formula (the one Welford's update in render.cpp
 // is a special case of), in double. That is the single run's result up to the float rounding
@@ -57,7 +58,7 @@ int to_int(const std::string& s, const char* what) {
 }
 
 image read_part_image(const std::string& path, const pixel_window& crop) {
-    image img = rt::read_pfm(path);
+    image img = rt::read_exact_image(path);
     if (img.width() != crop.width() || img.height() != crop.height())
         throw user_error("'" + path + "' must be " + std::to_string(crop.width()) + " x " +
                          std::to_string(crop.height()) + " (its crop " + text(crop) + "), got " +
@@ -151,8 +152,9 @@ int merge(int width, int height, int spp, const std::vector<std::vector<std::str
     for (const auto& path : outputs)
         if (auto problem = rt::output_path_problem(path); !problem.empty())
             throw user_error(problem);
-    if (!variance_output.empty() && !variance_output.ends_with(".pfm"))
-        throw user_error("variance output must end in .pfm, got " + variance_output);
+    if (!variance_output.empty() && !variance_output.ends_with(".pfm") &&
+        !variance_output.ends_with(".exr"))
+        throw user_error("variance output must end in .pfm or .exr, got " + variance_output);
 
     std::vector<part> parts;
     for (const auto& spec : specs) {
@@ -220,8 +222,8 @@ int main(int argc, char** argv) {
     app.add_option("--part", specs, "X0 Y0 X1 Y1 FROM TO MEAN.pfm VARIANCE.pfm|-")
         ->expected(8)
         ->required();
-    app.add_option("--out", outputs, "Merged image, .png or .pfm; may repeat")->required();
-    app.add_option("--variance-out", variance_output, "Merged variance of the mean, .pfm");
+    app.add_option("--out", outputs, "Merged image, .png, .pfm or .exr; may repeat")->required();
+    app.add_option("--variance-out", variance_output, "Merged variance of the mean, .pfm or .exr");
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
