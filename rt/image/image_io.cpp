@@ -65,6 +65,16 @@ image read_pfm(const std::string& path) {
         throw user_error("'" + path + "' is not an RGB PFM file");
     in.get();  // the single whitespace character that ends the header
 
+    // The pixels the header promises must be in the file before they are allocated: a header
+    // alone may claim any size.
+    const std::streampos data_start = in.tellg();
+    in.seekg(0, std::ios::end);
+    const std::streamoff data_bytes = in.tellg() - data_start;
+    in.seekg(data_start);
+    if (!in || data_bytes < 0 ||
+        std::uintmax_t(data_bytes) / 12 / std::uintmax_t(width) < std::uintmax_t(height))
+        throw user_error("'" + path + "' is truncated");
+
     const bool file_little_endian = scale < 0;
     const std::size_t row_floats  = std::size_t(width) * 3;
     std::vector<float> row(row_floats);

@@ -63,6 +63,26 @@ TEST_CASE("image_io: a PFM starts with its header and stores the bottom image ro
     }
 }
 
+TEST_CASE(
+    "image_io: a PFM that is not one, or holds fewer pixels than its header promises, is "
+    "refused before its pixels are allocated",
+    "[ch01]") {
+    temp_folder dir("image_io", "refused");
+    const std::string floats(2 * 2 * 12, '\0');
+    rt_test::write_bytes(dir.file("exact.pfm"), "PF\n2 2\n-1.0\n" + floats);
+    CHECK(rt::read_pfm(dir.file("exact.pfm")).width() == 2);
+    rt_test::write_bytes(dir.file("short.pfm"), "PF\n2 2\n-1.0\n" + floats.substr(1));
+    CHECK_THROWS_WITH(rt::read_pfm(dir.file("short.pfm")),
+                      "'" + dir.file("short.pfm") + "' is truncated");
+    // 10^10 pixels claimed (120 GB of floats), 12 bytes given: refused, not allocated.
+    rt_test::write_bytes(dir.file("huge.pfm"), "PF\n100000 100000\n-1.0\n" + floats.substr(36));
+    CHECK_THROWS_WITH(rt::read_pfm(dir.file("huge.pfm")),
+                      "'" + dir.file("huge.pfm") + "' is truncated");
+    rt_test::write_bytes(dir.file("text.pfm"), "P3\n1 1\n255\n0 0 0\n");
+    CHECK_THROWS_WITH(rt::read_pfm(dir.file("text.pfm")),
+                      "'" + dir.file("text.pfm") + "' is not an RGB PFM file");
+}
+
 TEST_CASE("image_io: a PNG decodes to the 8-bit sRGB codes of the image", "[ch01]") {
     temp_folder dir("image_io", "png");
     const int w = 7, h = 4;
