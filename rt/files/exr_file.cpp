@@ -153,8 +153,8 @@ exr_image read_exr_with(const std::string& name, read_state& state, bool from_me
         throw refuse("is tiled or deep: only scan-line images are read");
     exr_attr_box2i_t window{};
     check(exr_get_data_window(guard.context, 0, &window), "its data window");
-    const long long w = (long long)window.max.x - window.min.x + 1;
-    const long long h = (long long)window.max.y - window.min.y + 1;
+    const long long w = static_cast<long long>(window.max.x) - window.min.x + 1;
+    const long long h = static_cast<long long>(window.max.y) - window.min.y + 1;
     if (w <= 0 || h <= 0) throw refuse("has an empty data window");
     if (w * h > max_pixels)
         throw refuse("is " + std::to_string(w) + " x " + std::to_string(h) + ": more than " +
@@ -185,7 +185,7 @@ exr_image read_exr_with(const std::string& name, read_state& state, bool from_me
         exr_chunk_info_t chunk{};
         check(exr_read_scanline_chunk_info(guard.context, 0, int(y), &chunk), "a block of lines");
         if (chunk.start_y < window.min.y || chunk.height <= 0 ||
-            (long long)chunk.start_y + chunk.height - 1 > window.max.y)
+            static_cast<long long>(chunk.start_y) + chunk.height - 1 > window.max.y)
             throw refuse("has a block of lines outside its data window");
         if (!guard.decoding) {
             check(exr_decoding_initialize(guard.context, 0, &chunk, &guard.decoder),
