@@ -4,6 +4,10 @@
                     first on disk)
   rtlib.provenance  where a measurement was made: the machine, the compiler of a build, and the
                     commit a build or the tree is at (and whether its sources differ from it)
+  rtlib.report_html the HTML report: its page from the Markdown report, its image comparisons
+                    and the maps of where two images differ
+  rtlib.browser     a headless Chromium driven through its DevTools protocol (the HTML
+                    report's test)
 
 A tool finds this package beside itself, from any working directory, and writes no bytecode
 into the tree:
