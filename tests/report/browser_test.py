@@ -26,6 +26,7 @@ One line per check with what it measured, a FAIL line for each failure, and the 
 Exit 0 when every check passes, 1 otherwise (a browser that does not start too: one line)."""
 import argparse
 import io
+import math
 import os
 import pathlib
 import sys
@@ -433,13 +434,17 @@ def check_zoom(run, a, sel):
 def save_comparison(run, sel, shots):
     run.click(sel["mode"]("slider"))
     drag_split(run, sel, 0.25, 0.35)
+    # A viewport tall enough for the whole figure: a capture beyond the viewport lays the page
+    # out again at another size, and the rectangle measured before would miss the figure.
+    height = max(VIEWPORT[1], math.ceil(run.box(sel["figure"])["height"]) + 16)
+    run.b.resize(VIEWPORT[0], height)
     run.js(f"{sel['figure']}.scrollIntoView({{block: 'start', behavior: 'instant'}})")
     run.settle()
     r = run.box(sel["figure"])
     scroll = run.js("[scrollX, scrollY]")
     png = run.b.screenshot(round(r["left"] + scroll[0]), round(r["top"] + scroll[1]),
-                           round(r["width"]), round(r["height"]),
-                           beyond_viewport=r["height"] > VIEWPORT[1])
+                           round(r["width"]), round(r["height"]))
+    run.b.resize(*VIEWPORT)
     with open(os.path.join(shots, "comparison.png"), "wb") as f:
         f.write(png)
     print(f"screenshots: {shots}/first-screen.png, {shots}/comparison.png "

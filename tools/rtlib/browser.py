@@ -197,6 +197,10 @@ class Browser:
                                  {"targetId": target, "flatten": True})["sessionId"]
         for domain in ("Page", "Runtime", "Log", "Network"):
             self.send(f"{domain}.enable", session=True)
+        self.resize(width, height)
+
+    def resize(self, width, height):
+        """The viewport's size in CSS pixels, one device pixel each."""
         self.send("Emulation.setDeviceMetricsOverride",
                   {"width": width, "height": height, "deviceScaleFactor": 1, "mobile": False},
                   session=True)
