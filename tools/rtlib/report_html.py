@@ -54,10 +54,15 @@ def difference_map(a_path, b_path, out_path):
     palette = np.round(colormaps[COLOURS](np.arange(256) / 255.0)[:, :3] * 255)
     image = Image.fromarray(levels, mode="L").convert("P")
     image.putpalette(palette.astype(np.uint8).flatten().tolist())
-    os.makedirs(os.path.dirname(out_path), exist_ok=True)
-    image.save(out_path + ".tmp.png", optimize=True)
-    os.replace(out_path + ".tmp.png", out_path)
+    save_png(image, out_path, optimize=True)
     return scale, float(differing.mean())
+
+
+def save_png(image, path, **options):
+    """Writes a PIL image as PNG to path, whole or not at all (through a file beside it)."""
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    image.save(path + ".tmp.png", **options)
+    os.replace(path + ".tmp.png", path)
 
 
 def image_size(path):
@@ -196,7 +201,5 @@ def split_side_by_side(path, outs, pad=4):
             raise ValueError(f"{path} ({width} pixels wide) is not {count} images {pad} apart")
         each = (width - pad * (count - 1)) // count
         for i, out in enumerate(outs):
-            os.makedirs(os.path.dirname(out), exist_ok=True)
             left = i * (each + pad)
-            row.crop((left, 0, left + each, height)).save(out + ".tmp.png")
-            os.replace(out + ".tmp.png", out)
+            save_png(row.crop((left, 0, left + each, height)), out)
