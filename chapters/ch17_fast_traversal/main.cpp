@@ -19,6 +19,7 @@
 #include "rt/integrators/mis_tracer.h"
 #include "rt/integrators/mixture_tracer.h"
 #include "rt/integrators/path_tracer.h"
+#include "rt/lights/rectangle_light.h"
 #include "rt/program/asset_path.h"
 #include "rt/program/command_line.h"
 #include "rt/samplers/sobol_sampler.h"
@@ -40,14 +41,25 @@ int main(int argc, char** argv) {
                    "counted by its exact transmittance), light (chapter 14), or path (chapter 03)");
     cli.add_choice("--sampler", samples, {"sobol", "independent"},
                    "sobol (chapter 16), or independent (chapter 01)");
+    std::string quad_lights = "area";
+    cli.add_choice("--quad-lights", quad_lights, {"area", "solid-angle"},
+                   "how mis and mis-expected aim at rectangular lamps: area (chapter 14: a point "
+                   "uniform on the lamp), or solid-angle (a direction uniform in the solid angle "
+                   "the lamp covers)");
     cli.add_text("--texture", texture_file, "Image for globes");
     return cli.run(argc, argv, [&] {
         rt::scene scene = rt::with_fast_traversal(
             which == "ch14" ? book3_cornell_box() : scene_by_name(which, texture_file));
         if (samples == "sobol") scene.settings.make_sampler = rt::sobol_sampler::make;
-        if (integrator == "mis") return rt::mis_trace(scene);
+        if (quad_lights != "area" && integrator != "mis" && integrator != "mis-expected")
+            throw rt::user_error("--quad-lights " + quad_lights +
+                                 " must come with --integrator mis or mis-expected, got " +
+                                 integrator);
+        auto make_quad = quad_lights == "solid-angle" ? rt::rectangle_light::make : nullptr;
+        if (integrator == "mis")
+            return rt::mis_trace(scene, rt::light_through_media::sampled, make_quad);
         if (integrator == "mis-expected")
-            return rt::mis_trace(scene, rt::light_through_media::expected);
+            return rt::mis_trace(scene, rt::light_through_media::expected, make_quad);
         return integrator == "light" ? rt::mixture_trace(scene) : rt::path_trace(scene);
     });
 }

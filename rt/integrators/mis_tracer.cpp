@@ -35,10 +35,8 @@ mis_tracer::mis_tracer(std::shared_ptr<const hittable> w, const background& b)
 
 // [ch17 begin]
 mis_tracer::mis_tracer(std::shared_ptr<const hittable> w, const background& b,
-                       light_through_media how)
-    : mis_tracer(std::move(w), b) {
-    through_media = how;
-}
+                       light_through_media how, light_set::quad_light_maker make_quad)
+    : world(given(std::move(w))), sky(b), lights(*world, b, make_quad), through_media(how) {}
 
 color mis_tracer::expected_light(const ray& r, const hittable*& shape, hit_record& on_light) const {
     shape = lights.first_light_on(r, interval(0, infinity), on_light);
@@ -170,8 +168,10 @@ render_job mis_trace(const scene& sc) {
 }
 
 // [ch17 begin]
-render_job mis_trace(const scene& sc, light_through_media through_media) {
-    return {sc.cam, std::make_shared<mis_tracer>(sc.world, sc.sky, through_media), sc.settings};
+render_job mis_trace(const scene& sc, light_through_media through_media,
+                     light_set::quad_light_maker make_quad) {
+    return {sc.cam, std::make_shared<mis_tracer>(sc.world, sc.sky, through_media, make_quad),
+            sc.settings};
 }
 // [ch17 end]
 

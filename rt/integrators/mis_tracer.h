@@ -33,8 +33,11 @@ enum class light_through_media { sampled, expected };
 class mis_tracer : public radiance_estimator {
   public:
     mis_tracer(std::shared_ptr<const hittable> world, const background& sky);
-    mis_tracer(std::shared_ptr<const hittable> world, const background& sky,  // [ch17]
-               light_through_media through_media);                            // [ch17]
+    // [ch17 begin]
+    // make_quad: how the lights of emitting quads are made (light_set; nullptr: by area).
+    mis_tracer(std::shared_ptr<const hittable> world, const background& sky,
+               light_through_media through_media, light_set::quad_light_maker make_quad = nullptr);
+    // [ch17 end]
 
     // Per path segment at an evaluable material: 3 dimensions for the light sample, then the
     // material's own; from the third segment on, 1 for Russian roulette.
@@ -63,6 +66,9 @@ class mis_tracer : public radiance_estimator {
 
 // The scene's job, with next-event estimation and MIS.
 render_job mis_trace(const scene& sc);
-render_job mis_trace(const scene& sc, light_through_media through_media);  // [ch17]
+// [ch17 begin]
+render_job mis_trace(const scene& sc, light_through_media through_media,
+                     light_set::quad_light_maker make_quad = nullptr);
+// [ch17 end]
 
 }  // namespace rt

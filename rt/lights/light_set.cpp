@@ -25,7 +25,7 @@ class light_finder : public part_visitor {
     void visit(const hittable& part) override {
         // Exactly these types: a moving_sphere derives from neither, and its light moves.
         if (const auto* q = dynamic_cast<const quad*>(&part); q && is_light(q->surface()))
-            add(part, std::make_unique<quad_light>(*q));
+            add(part, light_of_quad(*q));
         else if (const auto* s = dynamic_cast<const sphere*>(&part); s && is_light(s->surface()))
             add(part, std::make_unique<sphere_light>(*s));
         else if (const auto* p = dynamic_cast<const light_part*>(&part); p && p->emits())  // [ch18]
@@ -39,7 +39,14 @@ class light_finder : public part_visitor {
     std::vector<std::pair<const hittable*, std::size_t>> parts;
     // [ch18 end]
 
+    light_set::quad_light_maker make_quad = nullptr;  // [ch17]
+
   private:
+    std::unique_ptr<light> light_of_quad(const quad& q) const {
+        if (make_quad) return make_quad(q);  // [ch17]
+        return std::make_unique<quad_light>(q);
+    }
+
     // [ch18 begin]
     std::unordered_map<const void*, std::size_t> group_light;
     void add_part(const hittable& shape, const light_part& part) {
@@ -64,7 +71,20 @@ class light_finder : public part_visitor {
 }  // namespace
 
 light_set::light_set(const hittable& world, const background& background_sky) {
+    find(world, background_sky);
+}
+
+// [ch17 begin]
+light_set::light_set(const hittable& world, const background& background_sky,
+                     quad_light_maker maker)
+    : make_quad(maker) {
+    find(world, background_sky);
+}
+// [ch17 end]
+
+void light_set::find(const hittable& world, const background& background_sky) {
     light_finder finder;
+    finder.make_quad = make_quad;  // [ch17]
     finder.visit(world);
     for (std::size_t i = 0; i < finder.found.size(); ++i)
         light_of_shape[finder.shapes[i]] = finder.found[i].get();

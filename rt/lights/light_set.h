@@ -34,9 +34,20 @@ class light_part {
 };
 // [ch18 end]
 
+// [ch17 begin]
+class quad;
+// [ch17 end]
+
 class light_set {
   public:
     light_set(const hittable& world, const background& sky);
+
+    // [ch17 begin]
+    // Makes the light of each emitting quad instead of a quad_light (rectangle_light::make draws
+    // rectangles by solid angle); nullptr: quad_light.
+    using quad_light_maker = std::unique_ptr<light> (*)(const quad&);
+    light_set(const hittable& world, const background& sky, quad_light_maker make_quad);
+    // [ch17 end]
 
     bool empty() const { return lights.empty(); }
     std::size_t size() const { return lights.size(); }
@@ -70,6 +81,10 @@ class light_set {
     static bool same_point(const ray& r, const hit_record& hit, const hit_record& direct);
 
   private:
+    // Finds the lights of world and sky (both constructors).
+    void find(const hittable& world, const background& sky);
+
+    quad_light_maker make_quad = nullptr;  // [ch17]
     std::vector<std::unique_ptr<light>> lights;
     std::unordered_map<const hittable*, const light*> light_of_shape;
     std::vector<const hittable*> single_shapes;  // [ch17] of the lights of one sphere or quad

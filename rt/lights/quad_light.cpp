@@ -10,7 +10,11 @@ namespace rt {
 quad_light::quad_light(const quad& q) : shape(&q), area(cross(q.edge_u(), q.edge_v()).length()) {}
 
 bool quad_light::sample(const point3& ref, sample2 u, light_sample& out) const {
-    point3 target = shape->corner() + u.u * shape->edge_u() + u.v * shape->edge_v();
+    return aim_at(ref, shape->corner() + u.u * shape->edge_u() + u.v * shape->edge_v(), out);
+}
+
+bool quad_light::aim_at(const point3& ref, const point3& target, light_sample& out,
+                        real density) const {
     // Aim at the point and let the quad itself say where the ray meets it: that gives the
     // point, its error bound and the normal facing ref exactly as a scattered ray would see them.
     ray towards(ref, target - ref);
@@ -19,7 +23,7 @@ bool quad_light::sample(const point3& ref, sample2 u, light_sample& out) const {
     real distance = to_light.length();
     if (!(distance > 0)) return false;
     out.wi  = to_light / distance;
-    out.pdf = pdf_at(ref, out.wi, out.on_light);
+    out.pdf = density > 0 ? density : pdf_at(ref, out.wi, out.on_light);
     if (!(out.pdf > 0 && std::isfinite(out.pdf))) return false;  // edge-on: no solid angle
     out.radiance    = out.on_light.mat->emitted(ray(ref, out.wi), out.on_light);
     out.at_infinity = false;

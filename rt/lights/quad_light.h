@@ -19,7 +19,11 @@ class quad_light : public light {
     real pdf(const point3& ref, const vec3& wi) const override;
     real pdf_at(const point3& ref, const vec3& wi, const hit_record& hit) const override;
 
-  private:
+  protected:
+    // The sample towards `target`, a point of the quad, with the given density (when the
+    // caller knows it: 0 asks pdf_at).
+    bool aim_at(const point3& ref, const point3& target, light_sample& out, real density = 0) const;
+
     const quad* shape;
     real area;
 };
