@@ -104,8 +104,8 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "rectangle_light: near its plane, directions uniform in the solid angle, pdf() = 1 / "
-    "solid angle; farther, by area as quad_light",
+    "rectangle_light: near its plane, directions uniform in the solid angle (pdf() = 1 / "
+    "solid angle), farther by area as quad_light",
     "[ch17]") {
     auto q = tilted_rectangle();
     rt::rectangle_light light(*q);
