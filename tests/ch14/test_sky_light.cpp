@@ -13,6 +13,7 @@
 
 #include "ch03/sampling_checks.h"
 #include "ch14/direction_checks.h"
+#include "ch14/light_checks.h"
 #include "rt/lights/sky_light.h"
 #include "rt/scene/background.h"
 #include "test_helpers.h"
@@ -55,17 +56,8 @@ TEST_CASE("sky_light: directions follow the sky's brightness, and the pdf integr
     for (const auto& [name, sky] : skies) {
         INFO(name << " sky");
         rt::sky_light light(sky);
-        auto draw = [&](rt::pcg32& rng, vec3& wi, real& pdf) {
-            rt::light_sample out;
-            if (!light.sample(ref, rt_test::sampling_checks::next_sample2(rng), out)) return false;
-            wi  = out.wi;
-            pdf = out.pdf;
-            return true;
-        };
-        auto pdf = [&](const vec3& wi) { return light.pdf(ref, wi); };
-        rt_test::direction_checks::check_directions(rt_test::direction_checks::test_directions(
-            bins, draw, pdf, 100000, sequence++,
-            64 * double(std::numeric_limits<real>::epsilon())));
+        rt_test::direction_checks::check_directions(rt_test::direction_checks::test_light(
+            light, bins, ref, sequence++, 64 * double(std::numeric_limits<real>::epsilon())));
     }
 }
 

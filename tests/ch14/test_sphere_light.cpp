@@ -13,6 +13,7 @@
 
 #include "ch03/sampling_checks.h"
 #include "ch14/direction_checks.h"
+#include "ch14/light_checks.h"
 #include "rt/geometry/sphere.h"
 #include "rt/lights/sphere_light.h"
 #include "rt/materials/diffuse_light.h"
@@ -33,16 +34,8 @@ std::shared_ptr<rt::sphere> light_sphere(const point3& center, real radius) {
 rt_test::direction_checks::direction_test test_from(const rt::sphere_light& light,
                                                     const direction_bins& bins, const point3& ref,
                                                     std::uint64_t sequence) {
-    auto draw = [&](rt::pcg32& rng, vec3& wi, real& pdf) {
-        rt::light_sample out;
-        if (!light.sample(ref, rt_test::sampling_checks::next_sample2(rng), out)) return false;
-        wi  = out.wi;
-        pdf = out.pdf;
-        return true;
-    };
-    auto pdf               = [&](const vec3& wi) { return light.pdf(ref, wi); };
-    const double tolerance = 1000 * double(std::numeric_limits<real>::epsilon());
-    return rt_test::direction_checks::test_directions(bins, draw, pdf, 100000, sequence, tolerance);
+    return rt_test::direction_checks::test_light(
+        light, bins, ref, sequence, 1000 * double(std::numeric_limits<real>::epsilon()));
 }
 
 bool finite(const vec3& v) {

@@ -17,6 +17,7 @@
 #include "ch03/sampling_checks.h"
 #include "ch14/direction_checks.h"
 #include "ch14/estimator_scenes.h"
+#include "ch14/quad_checks.h"
 #include "rt/geometry/quad.h"
 #include "rt/integrators/mis_tracer.h"
 #include "rt/lights/quad_light.h"
@@ -28,43 +29,19 @@ namespace {
 
 using rt::color, rt::point3, rt::real, rt::vec3;
 using rt_test::direction_checks::direction_bins;
+using rt_test::quad_checks::bins_around, rt_test::quad_checks::center_of;
 
 const color radiance(4, 2, 1);
 
-// A tilted 2.5 x 2.15 rectangle (its edges are perpendicular), well off every axis.
 std::shared_ptr<rt::quad> tilted_rectangle() {
-    return std::make_shared<rt::quad>(point3(-1, 2, -1.5), vec3(2.5, 0, 0), vec3(0, 0.8, 2),
-                                      std::make_shared<rt::diffuse_light>(radiance));
-}
-
-point3 center_of(const rt::quad& q) {
-    return q.corner() + real(0.5) * q.edge_u() + real(0.5) * q.edge_v();
-}
-
-// Bins about the direction from ref to the rectangle's center, wide enough for its outline.
-direction_bins bins_around(const rt::quad& q, const point3& ref) {
-    direction_bins probe(center_of(q) - ref, 2, 1, 1);
-    double widest = 0;
-    for (int i = 0; i < 4; ++i) {
-        point3 corner = q.corner() + real(i & 1) * q.edge_u() + real(i >> 1) * q.edge_v();
-        widest        = std::fmax(widest, probe.x_of(corner - ref));
-    }
-    return direction_bins(center_of(q) - ref, std::fmin(2.0, 1.25 * widest), 12, 16);
+    return rt_test::quad_checks::tilted_quad(radiance);
 }
 
 rt_test::direction_checks::direction_test test_from(const rt::light& light,
                                                     const direction_bins& bins, const point3& ref,
                                                     std::uint64_t sequence) {
-    auto draw = [&](rt::pcg32& rng, vec3& wi, real& pdf) {
-        rt::light_sample out;
-        if (!light.sample(ref, rt_test::sampling_checks::next_sample2(rng), out)) return false;
-        wi  = out.wi;
-        pdf = out.pdf;
-        return true;
-    };
-    auto pdf               = [&](const vec3& wi) { return light.pdf(ref, wi); };
-    const double tolerance = 1000 * double(std::numeric_limits<real>::epsilon());
-    return rt_test::direction_checks::test_directions(bins, draw, pdf, 100000, sequence, tolerance);
+    return rt_test::direction_checks::test_light(
+        light, bins, ref, sequence, 1000 * double(std::numeric_limits<real>::epsilon()));
 }
 
 bool finite(const vec3& v) {
