@@ -77,7 +77,8 @@ rm -f calls.txt
     fail "a run with --cycles failed: $(tail -3 log.txt)"
 for spp in 1 2 4 8; do
     for seed in 1 2; do
-        grep -q -- "-P .*bench/cycles_anchor.py -- --scene ch11 --width 32 --spp $spp --seed $seed --threads " calls.txt ||
+        call="-P .*bench/cycles_anchor.py -- --scene ch11 --width 32 --spp $spp --seed $seed"
+        grep -q -- "$call --threads " calls.txt ||
             fail "Blender was not called for $spp spp, seed $seed: $(cat calls.txt)"
     done
 done
