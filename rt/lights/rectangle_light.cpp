@@ -1,6 +1,7 @@
 #include "rt/lights/rectangle_light.h"
 
 #include <cmath>
+#include <limits>
 
 #include "rt/lights/spherical_rectangle.h"
 
@@ -13,7 +14,8 @@ rectangle_light::rectangle_light(const quad& q)
 
 bool rectangle_light::is_rectangle(const quad& q) {
     real lengths = q.edge_u().length() * q.edge_v().length();
-    return lengths > 0 && std::fabs(dot(q.edge_u(), q.edge_v())) <= 1e-12 * lengths;
+    return lengths > 0 && std::fabs(dot(q.edge_u(), q.edge_v())) <=
+                              64 * std::numeric_limits<real>::epsilon() * lengths;
 }
 
 std::unique_ptr<light> rectangle_light::make(const quad& q) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace rt {
@@ -10,6 +11,9 @@ namespace {
 
 // The inner angle between two great circles, from their planes' unit normals (each pointing
 // out of the spherical polygon).
+// Where the sine of the elevation is this near to 1, the height is the far edge itself.
+constexpr real near_one = 64 * std::numeric_limits<real>::epsilon();
+
 real inner_angle(const vec3& n_in, const vec3& n_out) {
     return std::acos(std::clamp(-dot(n_in, n_out), real(-1), real(1)));
 }
@@ -65,7 +69,7 @@ point3 spherical_rectangle::sample(sample2 u) const {
     real h1  = y1 / std::sqrt(dd * dd + y1 * y1);
     real hv  = h0 + u.v * (h1 - h0);
     real hv2 = hv * hv;
-    real yv  = hv2 < 1 - 1e-12 ? std::clamp(hv * dd / std::sqrt(1 - hv2), y0, y1) : y1;
+    real yv  = hv2 < 1 - near_one ? std::clamp(hv * dd / std::sqrt(1 - hv2), y0, y1) : y1;
     return ref + xu * x + yv * y + z0 * z;
 }
 
