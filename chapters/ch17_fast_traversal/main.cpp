@@ -7,6 +7,10 @@
 // same order, so every image is unchanged, byte for byte; only the time changes.
 // --scene chNN renders any earlier chapter's scene this way, with every integrator and sampler of
 // chapters 14-16.
+#include <algorithm>
+#include <cstdint>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +26,7 @@
 #include "rt/lights/rectangle_light.h"
 #include "rt/program/asset_path.h"
 #include "rt/program/command_line.h"
+#include "rt/render/adaptive_sampling.h"
 #include "rt/samplers/sobol_sampler.h"
 
 int main(int argc, char** argv) {
@@ -46,20 +51,55 @@ int main(int argc, char** argv) {
                    "how mis and mis-expected aim at rectangular lamps: area (chapter 14: a point "
                    "uniform on the lamp), or solid-angle (a direction uniform in the solid angle "
                    "the lamp covers)");
+    std::string fuzzy_metal = "followed";
+    cli.add_choice("--fuzzy-metal", fuzzy_metal, {"followed", "weighed"},
+                   "what mis and mis-expected do at fuzzy metal: followed (chapter 15: only its "
+                   "fuzzed direction), or weighed (the lights aimed at from it too, and both ways "
+                   "weighed by their densities)");
+    std::optional<rt::real> noise_threshold;
+    cli.add_number("--noise-threshold", noise_threshold,
+                   "adaptive sampling: a pixel stops once the noise of its mean, as a screen shows "
+                   "it, is at most this (units of white, e.g. 0.01; rt/render/adaptive_sampling.h)",
+                   0, false);
+    std::uint32_t min_spp = 16;
+    bool min_spp_given    = false;
+    cli.add_uint32_action("--min-spp",
+                          "with --noise-threshold: samples every pixel takes before its first "
+                          "check (default 16; then checks at each doubling)",
+                          [&](std::uint32_t n) {
+                              min_spp       = n;
+                              min_spp_given = true;
+                          });
     cli.add_text("--texture", texture_file, "Image for globes");
     return cli.run(argc, argv, [&] {
         rt::scene scene = rt::with_fast_traversal(
             which == "ch14" ? book3_cornell_box() : scene_by_name(which, texture_file));
         if (samples == "sobol") scene.settings.make_sampler = rt::sobol_sampler::make;
-        if (quad_lights != "area" && integrator != "mis" && integrator != "mis-expected")
-            throw rt::user_error("--quad-lights " + quad_lights +
-                                 " must come with --integrator mis or mis-expected, got " +
-                                 integrator);
-        auto make_quad = quad_lights == "solid-angle" ? rt::rectangle_light::make : nullptr;
-        if (integrator == "mis")
-            return rt::mis_trace(scene, rt::light_through_media::sampled, make_quad);
-        if (integrator == "mis-expected")
-            return rt::mis_trace(scene, rt::light_through_media::expected, make_quad);
+        if (min_spp_given && !noise_threshold)
+            throw rt::user_error("--min-spp must come with --noise-threshold");
+        if (noise_threshold)
+            scene.settings.stop_early = std::make_shared<rt::display_noise_rule>(
+                *noise_threshold, int(std::min<std::uint32_t>(min_spp, 1u << 30)));
+        const bool mis = integrator == "mis" || integrator == "mis-expected";
+        // The options of mis and mis-expected, given to another integrator, are refused.
+        auto only_with_mis = [&](const std::string& flag, const std::string& value,
+                                 const std::string& plain) {
+            if (value == plain || mis) return;
+            std::string message = flag;
+            message += " " + value + " must come with --integrator mis or mis-expected, got ";
+            message += integrator;
+            throw rt::user_error(message);
+        };
+        only_with_mis("--quad-lights", quad_lights, "area");
+        only_with_mis("--fuzzy-metal", fuzzy_metal, "followed");
+        if (mis) {
+            rt::mis_choices choices;
+            if (integrator == "mis-expected")
+                choices.through_media = rt::light_through_media::expected;
+            if (quad_lights == "solid-angle") choices.make_quad = rt::rectangle_light::make;
+            choices.weigh_fuzzy_metal = fuzzy_metal == "weighed";
+            return rt::mis_trace(scene, choices);
+        }
         return integrator == "light" ? rt::mixture_trace(scene) : rt::path_trace(scene);
     });
 }

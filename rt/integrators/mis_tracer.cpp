@@ -18,6 +18,39 @@ std::shared_ptr<const hittable> given(std::shared_ptr<const hittable> world) {
 
 // Russian roulette starts after this many segments: the first bounces carry most of the light.
 constexpr int roulette_after = 3;
+
+// [ch17 begin]
+// A material whose spread is evaluable (material::spread_is_evaluable: fuzzy metal) seen as an
+// evaluable lobe: the same directions and weights, with eval and pdf its spread's, and each
+// sample saying so with its density. Only for the vertex that holds it.
+class spread_lobe final : public material {
+  public:
+    explicit spread_lobe(const material& m) : inner(m) {}
+
+    color emitted(const ray& r_in, const hit_record& rec) const override {
+        return inner.emitted(r_in, rec);
+    }
+    std::optional<scatter_sample> scatter(const ray& r_in, const hit_record& rec,
+                                          sampler& s) const override {
+        std::optional<scatter_sample> sample = inner.scatter(r_in, rec, s);
+        if (sample) {
+            sample->from = lobe::evaluable;
+            sample->pdf  = inner.spread_pdf(r_in, rec, unit_vector(sample->scattered.direction()));
+        }
+        return sample;
+    }
+    lobe lobe_kind() const override { return lobe::evaluable; }
+    color eval(const ray& r_in, const hit_record& rec, const vec3& wi) const override {
+        return inner.spread_eval(r_in, rec, wi);
+    }
+    real pdf(const ray& r_in, const hit_record& rec, const vec3& wi) const override {
+        return inner.spread_pdf(r_in, rec, wi);
+    }
+
+  private:
+    const material& inner;
+};
+// [ch17 end]
 }  // namespace
 
 real power_heuristic(real pdf_taken, real pdf_other) {
@@ -34,9 +67,8 @@ mis_tracer::mis_tracer(std::shared_ptr<const hittable> w, const background& b)
     : world(given(std::move(w))), sky(b), lights(*world, b) {}
 
 // [ch17 begin]
-mis_tracer::mis_tracer(std::shared_ptr<const hittable> w, const background& b,
-                       light_through_media how, light_set::quad_light_maker make_quad)
-    : world(given(std::move(w))), sky(b), lights(*world, b, make_quad), through_media(how) {}
+mis_tracer::mis_tracer(std::shared_ptr<const hittable> w, const background& b, const mis_choices& c)
+    : world(given(std::move(w))), sky(b), lights(*world, b, c.make_quad), choices(c) {}
 
 color mis_tracer::expected_light(const ray& r, const hittable*& shape, hit_record& on_light) const {
     shape = lights.first_light_on(r, interval(0, infinity), on_light);
@@ -77,7 +109,7 @@ color mis_tracer::radiance(const ray& camera_ray, sampler& s, int max_depth) con
         // The light met along this segment, in expectation over the media it crosses.
         const hittable* light_shape = nullptr;
         hit_record on_light;
-        if (through_media == light_through_media::expected) {
+        if (choices.through_media == light_through_media::expected) {
             const color expected = expected_light(r, light_shape, on_light);
             if (!is_black(expected)) {
                 real w = 1;
@@ -99,6 +131,12 @@ color mis_tracer::radiance(const ray& camera_ray, sampler& s, int max_depth) con
             radiance += throughput * w * sky.radiance(r.direction());
             break;
         }
+        // [ch17 begin]
+        // Fuzzy metal weighed: for the rest of this vertex its material is seen through
+        // spread_lobe, whose lobe is evaluable, so that the light is aimed at from it too.
+        const spread_lobe weighed_spread(*rec.mat);
+        if (choices.weigh_fuzzy_metal && rec.mat->spread_is_evaluable()) rec.mat = &weighed_spread;
+        // [ch17 end]
         const material& surface = *rec.mat;
         color emitted           = surface.emitted(r, rec);
         // [ch17 begin]
@@ -168,10 +206,8 @@ render_job mis_trace(const scene& sc) {
 }
 
 // [ch17 begin]
-render_job mis_trace(const scene& sc, light_through_media through_media,
-                     light_set::quad_light_maker make_quad) {
-    return {sc.cam, std::make_shared<mis_tracer>(sc.world, sc.sky, through_media, make_quad),
-            sc.settings};
+render_job mis_trace(const scene& sc, const mis_choices& choices) {
+    return {sc.cam, std::make_shared<mis_tracer>(sc.world, sc.sky, choices), sc.settings};
 }
 // [ch17 end]
 

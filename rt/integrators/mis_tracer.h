@@ -28,22 +28,31 @@ real power_heuristic(real pdf_taken, real pdf_other);
 // mean, without the noise of an all-or-nothing draw: a lamp seen through thin mist, which a
 // few percent of samples miss, stops speckling.
 enum class light_through_media { sampled, expected };
+
+// What chapter 17 adds to the way a path meets lights; the defaults are chapter 15's.
+struct mis_choices {
+    light_through_media through_media = light_through_media::sampled;
+    // How the lights of emitting quads are made (light_set; nullptr: by area).
+    light_set::quad_light_maker make_quad = nullptr;
+    // Whether fuzzy metal (material::spread_is_evaluable) joins MIS: the lights are aimed at
+    // from it too, and each way weighed by its density, instead of its direction only
+    // followed. A broad fuzz sees a lamp by its scattered ray rarely, by a shadow ray always.
+    bool weigh_fuzzy_metal = false;
+};
 // [ch17 end]
 
 class mis_tracer : public radiance_estimator {
   public:
     mis_tracer(std::shared_ptr<const hittable> world, const background& sky);
-    // [ch17 begin]
-    // make_quad: how the lights of emitting quads are made (light_set; nullptr: by area).
     mis_tracer(std::shared_ptr<const hittable> world, const background& sky,
-               light_through_media through_media, light_set::quad_light_maker make_quad = nullptr);
-    // [ch17 end]
+               const mis_choices& choices);  // [ch17]
 
     // Per path segment at an evaluable material: 3 dimensions for the light sample, then the
     // material's own; from the third segment on, 1 for Russian roulette.
     color radiance(const ray& r, sampler& s, int max_depth) const override;
     std::string_view name() const override {
-        if (through_media == light_through_media::expected) return "mis-expected";  // [ch17]
+        if (choices.through_media == light_through_media::expected)
+            return "mis-expected";  // [ch17]
         return "mis";
     }
 
@@ -61,14 +70,13 @@ class mis_tracer : public radiance_estimator {
     std::shared_ptr<const hittable> world;
     background sky;
     light_set lights;
-    light_through_media through_media = light_through_media::sampled;  // [ch17]
+    mis_choices choices;  // [ch17]
 };
 
 // The scene's job, with next-event estimation and MIS.
 render_job mis_trace(const scene& sc);
 // [ch17 begin]
-render_job mis_trace(const scene& sc, light_through_media through_media,
-                     light_set::quad_light_maker make_quad = nullptr);
+render_job mis_trace(const scene& sc, const mis_choices& choices);
 // [ch17 end]
 
 }  // namespace rt

@@ -19,8 +19,8 @@ enum class lobe : std::uint8_t {
     // A density the material can evaluate for any direction (material::eval and pdf): a light
     // may be aimed at, and each way of finding it weighed against the other.
     evaluable,
-    // No density anybody can weigh: one direction for each incoming ray (a mirror, glass: a
-    // delta), or a spread whose density has no closed form (metal's fuzz). Only followed.
+    // Only followed: one direction for each incoming ray (a mirror, glass: a delta), or a
+    // spread chapters 14-16 do not weigh (metal's fuzz, whose density chapter 17 gives).
     sampled_only,
 };
 // [ch14 end]
@@ -65,6 +65,21 @@ class material {
         return 0;
     }
     // [ch14 end]
+    // [ch17 begin]
+    // A sampled_only lobe whose density is known all the same, so that an integrator that asks
+    // for it may aim at lights here and weigh both ways: metal's fuzz (a direction towards a
+    // point uniform in a ball has a density in closed form). Chapters 14-16 follow such a lobe
+    // only, and eval and pdf stay 0 for it; these give what they would give.
+    virtual bool spread_is_evaluable() const { return false; }
+    virtual color spread_eval(const ray& /*r_in*/, const hit_record& /*rec*/,
+                              const vec3& /*wi*/) const {
+        return color();
+    }
+    virtual real spread_pdf(const ray& /*r_in*/, const hit_record& /*rec*/,
+                            const vec3& /*wi*/) const {
+        return 0;
+    }
+    // [ch17 end]
 };
 
 }  // namespace rt

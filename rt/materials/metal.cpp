@@ -25,4 +25,21 @@ std::optional<scatter_sample> metal::scatter(const ray& r_in, const hit_record& 
     // [exercise metal::scatter end]
 }
 
+// [ch17 begin]
+real metal::spread_pdf(const ray& r_in, const hit_record& rec, const vec3& wi) const {
+    if (!spread_is_evaluable() || !(dot(wi, rec.normal) > 0)) return 0;
+    const vec3 mirror = unit_vector(reflect(r_in.direction(), rec.normal));
+    const real c      = dot(wi, mirror);
+    // |w x m|^2 rather than 1 - c^2, which cancels for the narrow cones of a small fuzz.
+    const real h2 = fuzz * fuzz - cross(wi, mirror).length_squared();
+    if (!(c > 0) || !(h2 > 0)) return 0;
+    const real h = std::sqrt(h2);
+    return h * (3 * c * c + h2) / (2 * pi * fuzz * fuzz * fuzz);
+}
+
+color metal::spread_eval(const ray& r_in, const hit_record& rec, const vec3& wi) const {
+    return spread_pdf(r_in, rec, wi) * albedo;
+}
+// [ch17 end]
+
 }  // namespace rt

@@ -30,7 +30,7 @@ void print_summary(const std::string& name, const film& f, const render_settings
                  "samples/s\n",
                  name.c_str(), f.width, f.height, s.samples_per_pixel, s.max_depth,
                  static_cast<unsigned long long>(s.seed), part.c_str(), r.threads, r.seconds,
-                 double(r.camera_samples()) / r.seconds * 1e-6);
+                 double(r.camera_samples) / r.seconds * 1e-6);
 }
 
 // Whether two paths name the same file, as far as the paths tell ("x.pfm", "./x.pfm").
@@ -213,6 +213,7 @@ run_stats command_line::record_of(const render_job& job, const film& f,
         .settings        = settings,
         .window          = result.window,
         .samples         = result.samples,
+        .camera_samples  = result.camera_samples,
         .rays            = result.rays,
         .seconds         = result.seconds,
         .process_seconds = std::chrono::duration<double>(clock::now() - start).count(),

@@ -58,7 +58,7 @@ std::string relative(const std::string& path, const std::string& folder) {
 
 std::string to_json(const run_stats& s, const std::string& relative_to) {
     const render_settings& set = s.settings;
-    const double samples       = double(s.window.width()) * s.window.height() * s.samples.count();
+    const auto samples         = double(s.camera_samples);
     std::ostringstream j;
     j << "{\n";
     j << "  \"program\": " << quoted(s.program) << ",\n";

@@ -28,9 +28,10 @@ struct run_stats {
     render_settings settings;          // threads resolved (never 0)
     pixel_window window;               // the pixels rendered
     sample_range samples;              // the sample indices rendered
-    std::uint64_t rays     = 0;        // rays traced into the world
-    double seconds         = 0;        // the render loop, wall clock
-    double process_seconds = 0;        // the whole run: scene, render and writing the images
+    std::uint64_t camera_samples = 0;  // samples estimated (fewer where pixels stop early)
+    std::uint64_t rays           = 0;  // rays traced into the world
+    double seconds               = 0;  // the render loop, wall clock
+    double process_seconds       = 0;  // the whole run: scene, render and writing the images
     std::vector<std::string> outputs;  // image files written
     std::string variance_output;       // or empty
 };

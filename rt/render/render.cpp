@@ -45,15 +45,22 @@ render_result render(const film& f, const camera& cam, const radiance_estimator&
     const int count = range.count();
     // NOLINTNEXTLINE(clang-analyzer-deadcode.DeadStores): read by the omp pragma below
     const int threads = settings.threads > 0 ? settings.threads : omp_get_num_procs();
+    // [ch17 begin]
+    require(!(settings.stop_early && settings.samples), "sample range FROM:TO",
+            "be left out when pixels may stop early (adaptive sampling)",
+            std::to_string(range.from) + ":" + std::to_string(range.to));
+    const int first_check = settings.stop_early ? settings.stop_early->first_check() : 0;
+    // [ch17 end]
     render_result result{image(width, height), image(width, height), 0, window, range, 0, threads};
     const auto start = std::chrono::steady_clock::now();
 
-    std::atomic<std::uint64_t> rays{0};
+    std::atomic<std::uint64_t> rays{0}, samples_taken{0};
 #pragma omp parallel num_threads(threads)
     {
         // Each thread counts its own rays (ray_count.h); what it counted here joins the total
         // once, at the end, so the hot loop never touches shared memory for it.
         const std::uint64_t rays_before = rays_traced_by_this_thread;
+        std::uint64_t taken_here        = 0;
         // Dynamic scheduling: rows through glass cost more than rows of sky.
 #pragma omp for schedule(dynamic, 1)
         for (int row = 0; row < height; ++row) {
@@ -67,6 +74,8 @@ render_result render(const film& f, const camera& cam, const radiance_estimator&
                 // difference cancels, it gives variance exactly 0 (and the mean exactly L) when
                 // every sample is the same L, and m2 never goes negative.
                 double mean[3] = {0, 0, 0}, m2[3] = {0, 0, 0};
+                int taken      = count;        // samples this pixel takes
+                int next_check = first_check;  // [ch17]
                 for (int k = range.from; k < range.to; ++k) {
                     s.start_pixel_sample(i, j, k);
                     color L     = estimator.radiance(cam.get_ray(i, j, s), s, settings.max_depth);
@@ -77,12 +86,22 @@ render_result render(const film& f, const camera& cam, const radiance_estimator&
                         mean[c] += delta / n;
                         m2[c] += delta * (x - mean[c]);
                     }
+                    // [ch17 begin]
+                    if (n == next_check && n < count) {
+                        if (settings.stop_early->enough(mean, m2, n)) {
+                            taken = n;
+                            break;
+                        }
+                        next_check *= 2;
+                    }
+                    // [ch17 end]
                 }
+                taken_here += std::uint64_t(taken);
                 color pixel_mean, variance;
                 for (int c = 0; c < 3; ++c) {
-                    double sample_var = count > 1 ? m2[c] / (count - 1) : 0.0;
+                    double sample_var = taken > 1 ? m2[c] / (taken - 1) : 0.0;
                     pixel_mean[c]     = real(mean[c]);
-                    variance[c]       = real(sample_var / count);
+                    variance[c]       = real(sample_var / taken);
                 }
                 result.mean.set(col, row, pixel_mean);
                 result.mean_variance.set(col, row, variance);
@@ -90,10 +109,12 @@ render_result render(const film& f, const camera& cam, const radiance_estimator&
             if (rows) rows->row_done();
         }
         rays += rays_traced_by_this_thread - rays_before;
+        samples_taken += taken_here;
     }
     result.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    result.rays = rays.load();
+    result.rays           = rays.load();
+    result.camera_samples = samples_taken.load();
     return result;
 }
 

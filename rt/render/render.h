@@ -35,6 +35,19 @@ struct sample_range {
     int count() const { return to - from; }
 };
 
+// [ch17 begin]
+// Whether a pixel has samples enough before its last (chapter 17's adaptive sampling,
+// rt/render/adaptive_sampling.h). Asked after first_check() samples and at every doubling of
+// that count, with the pixel's running mean and sum of squared deviations m2 per channel over
+// its n samples: its own samples only, so that the image never depends on the threads.
+class stopping_rule {
+  public:
+    virtual ~stopping_rule()                                                         = default;
+    virtual int first_check() const                                                  = 0;
+    virtual bool enough(const double (&mean)[3], const double (&m2)[3], int n) const = 0;
+};
+// [ch17 end]
+
 // How to render: a scene brings its own defaults (its report settings); flags override them.
 struct render_settings {
     int width             = 400;  // Image width in pixels; the height from the aspect ratio
@@ -48,6 +61,9 @@ struct render_settings {
     // Where pixel samples take their numbers: chapter 01's independent PCG32 streams, unless
     // a program chooses another (chapter 16's Sobol' points).
     sampler_factory make_sampler = independent_sampler::make;
+    // When a pixel may stop before samples_per_pixel (none: never). Not with `samples`: the
+    // parts of a split render could not know where the whole one would have stopped.
+    std::shared_ptr<const stopping_rule> stop_early;  // [ch17]
 };
 
 // Everything a chapter's program renders: how the camera looks, how a sample is estimated, and
@@ -66,10 +82,9 @@ struct render_result {
     sample_range samples;    // the sample indices rendered per pixel
     std::uint64_t rays = 0;  // rays the estimator traced into the world (ray_count.h)
     int threads        = 0;  // worker threads used
-    std::uint64_t camera_samples() const {
-        return std::uint64_t(window.width()) * std::uint64_t(window.height()) *
-               std::uint64_t(samples.count());
-    }
+    // Camera samples estimated: the window's pixels times the sample range, fewer where a
+    // pixel stopped early (render_settings::stop_early).
+    std::uint64_t camera_samples = 0;
 };
 
 // The window and sample range a render of f with these settings covers. Throws user_error if

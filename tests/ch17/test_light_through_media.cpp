@@ -73,7 +73,7 @@ TEST_CASE("light_through_media::expected: the mean of mis and of the path tracer
         INFO(sc.name);
         const rt::path_tracer path(sc.world, sc.sky);
         const rt::mis_tracer sampled(sc.world, sc.sky);
-        const rt::mis_tracer expected(sc.world, sc.sky, rt::light_through_media::expected);
+        const rt::mis_tracer expected(sc.world, sc.sky, {rt::light_through_media::expected});
         const run by_path     = estimate(path, sc, 40000, seed++);
         const run by_sampled  = estimate(sampled, sc, 40000, seed++);
         const run by_expected = estimate(expected, sc, 40000, seed++);
@@ -95,7 +95,7 @@ TEST_CASE("light_through_media::expected: a lamp seen through mist stops speckli
     const test_scene sc   = lamp_through_mist();
     const run by_sampled  = estimate(rt::mis_tracer(sc.world, sc.sky), sc, 20000, 801);
     const run by_expected = estimate(
-        rt::mis_tracer(sc.world, sc.sky, rt::light_through_media::expected), sc, 20000, 802);
+        rt::mis_tracer(sc.world, sc.sky, {rt::light_through_media::expected}), sc, 20000, 802);
     check_same_mean(by_sampled, by_expected);
     const double sampled_se  = by_sampled.radiance.estimate().standard_error;
     const double expected_se = by_expected.radiance.estimate().standard_error;
@@ -105,7 +105,7 @@ TEST_CASE("light_through_media::expected: a lamp seen through mist stops speckli
 
 TEST_CASE("light_through_media::expected: is named \"mis-expected\"", "[ch17]") {
     const test_scene sc = lamp_through_mist();
-    CHECK(rt::mis_tracer(sc.world, sc.sky, rt::light_through_media::expected).name() ==
+    CHECK(rt::mis_tracer(sc.world, sc.sky, {rt::light_through_media::expected}).name() ==
           "mis-expected");
     CHECK(rt::mis_tracer(sc.world, sc.sky).name() == "mis");
 }

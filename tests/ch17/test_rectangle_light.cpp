@@ -200,8 +200,8 @@ TEST_CASE("rectangle_light: mis keeps its mean with rectangles drawn by solid an
     for (const test_scene& sc : all_scenes()) {
         INFO(sc.name);
         const rt::mis_tracer by_area(sc.world, sc.sky);
-        const rt::mis_tracer by_solid_angle(sc.world, sc.sky, rt::light_through_media::sampled,
-                                            rt::rectangle_light::make);
+        const rt::mis_tracer by_solid_angle(
+            sc.world, sc.sky, {rt::light_through_media::sampled, rt::rectangle_light::make});
         const run a = estimate(by_area, sc, 40000, seed++);
         const run b = estimate(by_solid_angle, sc, 40000, seed++);
         check_run(b, sc);
@@ -220,8 +220,8 @@ TEST_CASE("rectangle_light: the direct light on a ceiling beside a lamp is far l
     sc.spread     = real(0.05);
     sc.max_depth  = 2;  // the lamp's own light on it, by both of MIS's strategies
     const rt::mis_tracer by_area(sc.world, sc.sky);
-    const rt::mis_tracer by_solid_angle(sc.world, sc.sky, rt::light_through_media::sampled,
-                                        rt::rectangle_light::make);
+    const rt::mis_tracer by_solid_angle(
+        sc.world, sc.sky, {rt::light_through_media::sampled, rt::rectangle_light::make});
     const run a = estimate(by_area, sc, 20000, 1201);
     const run b = estimate(by_solid_angle, sc, 20000, 1202);
     check_same_mean(a, b);

@@ -1,9 +1,11 @@
 #!/usr/bin/python3
 """The record of a run (--stats-out FILE.json) has every key with the right type, and values
 that agree with each other and with the run's settings.
-  stats_schema.py EXE INTEGRATOR
+  stats_schema.py EXE INTEGRATOR [SAMPLER]
 INTEGRATOR is the name the chapter's estimator gives: sky traces no ray into the world, normals
-exactly one per camera sample, path at least one."""
+exactly one per camera sample, path (and mis) at least one. SAMPLER is the program's default
+sampler's name (independent unless given). A program with adaptive sampling (--noise-threshold)
+also records a run whose pixels stop early: camera_samples counts the samples they took."""
 import json
 import math
 import os
@@ -20,6 +22,7 @@ SETTINGS = {"width": int, "height": int, "spp": int, "max_depth": int, "seed": i
             "threads": int, "crop": list, "samples": list}
 
 failures = []
+SAMPLER = "independent"  # main() sets it from the command line
 
 
 def check(ok, what):
@@ -49,7 +52,7 @@ def check_record(path, exe, integrator, args, expect):
     program = os.path.basename(exe)
     check(record["program"] == program, f"program {record['program']!r}, not {program!r}")
     check(record["integrator"] == integrator, f"integrator {record['integrator']!r}")
-    check(record["sampler"] == "independent", f"sampler {record['sampler']!r}")
+    check(record["sampler"] == SAMPLER, f"sampler {record['sampler']!r}, not {SAMPLER!r}")
     check(record["scalar"] in ("double", "float"), f"scalar {record['scalar']!r}")
     check(all(isinstance(v, str) for v in record["options"].values()), "options not strings")
     for key, value in expect.items():
@@ -60,8 +63,13 @@ def check_record(path, exe, integrator, args, expect):
     check(0 <= first < end <= s["spp"], f"samples {s['samples']}")
     check(s["threads"] >= 1, f"threads {s['threads']}")
     samples = (x1 - x0) * (y1 - y0) * (end - first)
-    check(record["camera_samples"] == samples,
-          f"camera_samples {record['camera_samples']}, not {samples} (crop x samples)")
+    if "--noise-threshold" in args:  # adaptive sampling: pixels may stop after --min-spp
+        least = (x1 - x0) * (y1 - y0) * min(int(args[args.index("--min-spp") + 1]), end)
+        check(least <= record["camera_samples"] <= samples,
+              f"camera_samples {record['camera_samples']}, not in [{least}, {samples}]")
+    else:
+        check(record["camera_samples"] == samples,
+              f"camera_samples {record['camera_samples']}, not {samples} (crop x samples)")
     rays, camera_samples = record["rays"], record["camera_samples"]
     if integrator == "sky":
         check(rays == 0, f"rays {rays}: the sky alone traces none")
@@ -86,7 +94,9 @@ def run(exe, args):
 
 
 def main():
+    global SAMPLER
     exe, integrator = os.path.abspath(sys.argv[1]), sys.argv[2]
+    SAMPLER = sys.argv[3] if len(sys.argv) > 3 else "independent"
     with tempfile.TemporaryDirectory() as work:
         os.chdir(work)
         # The whole image.
@@ -114,6 +124,19 @@ def main():
             check(record["camera_samples"] == 17 * 3 * 3, "camera_samples of the part")
             check(record["outputs"] == ["b.pfm"], f"outputs {record['outputs']}")
             check(record["variance_out"] == "b-var.pfm", f"variance_out {record['variance_out']}")
+        # Adaptive sampling (chapter 17 on): the samples the pixels took, fewer than all.
+        helps = subprocess.run([exe, "--help"], capture_output=True, text=True).stdout
+        if "--noise-threshold" in helps:
+            args = ["--quiet", "--width", "24", "--spp", "64", "--noise-threshold", "0.5",
+                    "--min-spp", "4", "--out", "c.pfm", "--stats-out", "c.json"]
+            if run(exe, args):
+                check_record("c.json", exe, integrator, args, {"width": 24, "spp": 64})
+                with open("c.json") as f:
+                    record = json.load(f)
+                pixels = 24 * record["settings"]["height"]
+                check(record["camera_samples"] < pixels * 64,
+                      f"camera_samples {record['camera_samples']}: no pixel stopped early at "
+                      "a threshold of half of white")
     for failure in failures:
         print(f"FAIL: {failure}")
     if not failures:
