@@ -47,6 +47,9 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("zoo_build")
     parser.add_argument("--report")
+    parser.add_argument("--renders", type=int,
+                        help="our renders that measure the noise (check-render's --renders; "
+                        "default: its own, 4 to 32)")
     args = parser.parse_args()
     with open(os.path.join(args.zoo_build, "zoo.json")) as f:
         results = json.load(f)
@@ -63,6 +66,8 @@ def main():
         command = [CHECK, scene, image, "--spp", str(SPP), "--encoding", "srgb", "--fresnel",
                    "schlick", "--texture-decoding", "srgb", "--map",
                    os.path.join(args.zoo_build, "student", r["name"] + ".check.png")]
+        if args.renders:
+            command += ["--renders", str(args.renders)]
         if scenes[scene].get("texture"):
             command += ["--texture", os.path.join(ROOT, "assets", "globe.png")]
         run = subprocess.run(command, capture_output=True, text=True)
