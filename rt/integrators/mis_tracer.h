@@ -44,15 +44,18 @@ struct mis_choices {
 class mis_tracer : public radiance_estimator {
   public:
     mis_tracer(std::shared_ptr<const hittable> world, const background& sky);
+    // [ch17 begin]
     mis_tracer(std::shared_ptr<const hittable> world, const background& sky,
-               const mis_choices& choices);  // [ch17]
+               const mis_choices& choices);
+    // [ch17 end]
 
     // Per path segment at an evaluable material: 3 dimensions for the light sample, then the
     // material's own; from the third segment on, 1 for Russian roulette.
     color radiance(const ray& r, sampler& s, int max_depth) const override;
     std::string_view name() const override {
-        if (choices.through_media == light_through_media::expected)
-            return "mis-expected";  // [ch17]
+        // [ch17 begin]
+        if (choices.through_media == light_through_media::expected) return "mis-expected";
+        // [ch17 end]
         return "mis";
     }
 
