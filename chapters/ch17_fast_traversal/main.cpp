@@ -20,6 +20,7 @@
 #include "ch14_importance_sampling/book3_cornell_box.h"
 #include "ch14_importance_sampling/scene_catalog.h"
 #include "rt/accel/fast_traversal.h"
+#include "rt/integrators/in_scattering.h"
 #include "rt/integrators/mis_tracer.h"
 #include "rt/integrators/mixture_tracer.h"
 #include "rt/integrators/path_tracer.h"
@@ -56,6 +57,12 @@ int main(int argc, char** argv) {
                    "what mis and mis-expected do at fuzzy metal: followed (chapter 15: only its "
                    "fuzzed direction), or weighed (the lights aimed at from it too, and both ways "
                    "weighed by their densities)");
+    std::string medium_light = "scattered";
+    cli.add_choice("--medium-light", medium_light, {"scattered", "along-rays"},
+                   "how mis and mis-expected aim at the lights from fog and smoke: scattered "
+                   "(chapter 15: from where a ray happens to scatter), or along-rays (every "
+                   "segment through a medium aims once, from a point chosen along it, nearer the "
+                   "lights more often: equiangular sampling)");
     std::optional<rt::real> noise_threshold;
     cli.add_number("--noise-threshold", noise_threshold,
                    "adaptive sampling: a pixel stops once the noise of its mean, as a screen shows "
@@ -92,12 +99,14 @@ int main(int argc, char** argv) {
         };
         only_with_mis("--quad-lights", quad_lights, "area");
         only_with_mis("--fuzzy-metal", fuzzy_metal, "followed");
+        only_with_mis("--medium-light", medium_light, "scattered");
         if (mis) {
             rt::mis_choices choices;
             if (integrator == "mis-expected")
                 choices.through_media = rt::light_through_media::expected;
             if (quad_lights == "solid-angle") choices.make_quad = rt::rectangle_light::make;
             choices.weigh_fuzzy_metal = fuzzy_metal == "weighed";
+            if (medium_light == "along-rays") choices.aim_along_rays = rt::in_scattering::make;
             return rt::mis_trace(scene, choices);
         }
         return integrator == "light" ? rt::mixture_trace(scene) : rt::path_trace(scene);

@@ -68,7 +68,9 @@ mis_tracer::mis_tracer(std::shared_ptr<const hittable> w, const background& b)
 
 // [ch17 begin]
 mis_tracer::mis_tracer(std::shared_ptr<const hittable> w, const background& b, const mis_choices& c)
-    : world(given(std::move(w))), sky(b), lights(*world, b, c.make_quad), choices(c) {}
+    : world(given(std::move(w))), sky(b), lights(*world, b, c.make_quad), choices(c) {
+    if (choices.aim_along_rays) along_rays = choices.aim_along_rays(*world, lights);
+}
 
 color mis_tracer::expected_light(const ray& r, const hittable*& shape, hit_record& on_light) const {
     shape = lights.first_light_on(r, interval(0, infinity), on_light);
@@ -104,6 +106,14 @@ color mis_tracer::radiance(const ray& camera_ray, sampler& s, int max_depth) con
     bool weigh_emission = false;
     real material_pdf   = 0;
     point3 last_vertex;
+    // [ch17 begin]
+    // Whether the last vertex was a medium's point whose light along_rays aimed at along the
+    // segment that reached it: the light set's lights this segment finds are counted already.
+    bool aimed_before = false;
+    // Whether the eye sees this segment directly or through mirrors and glass only (every
+    // vertex so far followed, none evaluable): where the light a medium scatters shows most.
+    bool seen_sharply = true;
+    // [ch17 end]
     for (int segment = 0; segment < max_depth; ++segment) {
         // [ch17 begin]
         // The light met along this segment, in expectation over the media it crosses.
@@ -117,17 +127,32 @@ color mis_tracer::radiance(const ray& camera_ray, sampler& s, int max_depth) con
                     w = power_heuristic(
                         material_pdf,
                         lights.pdf_of_hit(last_vertex, unit_vector(r.direction()), on_light));
+                // Counted along the segment before, if the light set could have aimed at it.
+                if (aimed_before &&
+                    lights.pdf_of_hit(last_vertex, unit_vector(r.direction()), on_light) > 0)
+                    w = 0;
                 radiance += throughput * w * expected;
             }
         }
         // [ch17 end]
         hit_record rec;
         count_ray();
-        if (!world->hit(r, interval(0, infinity), rec)) {
+        const bool found = world->hit(r, interval(0, infinity), rec);
+        // [ch17 begin]
+        if (along_rays && seen_sharply && segment + 1 < max_depth) {
+            s.start_side_draws(segment);
+            radiance += throughput * along_rays->along(r, found, rec, s);
+        }
+        // [ch17 end]
+        if (!found) {
             real w = 1;
             if (weigh_emission)
                 w = power_heuristic(material_pdf,
                                     lights.pdf_of_sky(last_vertex, unit_vector(r.direction())));
+            // [ch17 begin]
+            if (aimed_before && lights.pdf_of_sky(last_vertex, unit_vector(r.direction())) > 0)
+                w = 0;
+            // [ch17 end]
             radiance += throughput * w * sky.radiance(r.direction());
             break;
         }
@@ -143,6 +168,10 @@ color mis_tracer::radiance(const ray& camera_ray, sampler& s, int max_depth) con
         // Already counted, in expectation, if this is the light expected_light found.
         if (light_shape && rec.object == light_shape && light_set::same_point(r, rec, on_light))
             emitted = color(0, 0, 0);
+        // Counted along the segment before, if the light set could have aimed at it.
+        if (aimed_before && !is_black(emitted) &&
+            lights.pdf_of_hit(last_vertex, unit_vector(r.direction()), rec) > 0)
+            emitted = color(0, 0, 0);
         // [ch17 end]
         if (!is_black(emitted)) {
             // [exercise mis_tracer::hit_weight begin]
@@ -157,7 +186,13 @@ color mis_tracer::radiance(const ray& camera_ray, sampler& s, int max_depth) con
         s.start_segment(segment);  // [ch16]
         const bool evaluable = surface.lobe_kind() == lobe::evaluable && !lights.empty();
         // Next-event estimation: only where the light it finds is still within max_depth.
-        if (evaluable && segment + 1 < max_depth) {
+        bool next_event = evaluable && segment + 1 < max_depth;
+        // [ch17 begin]
+        // A medium's point whose light was aimed at along the segment that reached it.
+        const bool aimed_here = along_rays && seen_sharply && along_rays->covers(r, rec);
+        if (aimed_here) next_event = false;
+        // [ch17 end]
+        if (next_event) {
             // [exercise mis_tracer::next_event begin]
             real pick = s.next_1d();
             light_sample towards;
@@ -180,7 +215,11 @@ color mis_tracer::radiance(const ray& camera_ray, sampler& s, int max_depth) con
         // The light the next segment finds was also aimed at from here only where the lobe
         // could be weighed; the sample brings the density it was drawn with.
         weigh_emission = evaluable && next->from == lobe::evaluable;
-        material_pdf   = next->pdf;
+        // [ch17 begin]
+        aimed_before = aimed_here;
+        seen_sharply = seen_sharply && !evaluable && next->from != lobe::evaluable;
+        // [ch17 end]
+        material_pdf = next->pdf;
         // Where the scattered ray really starts (off the surface): light_set::pdf_of_hit asks
         // the light's shape again along this same ray, and must find the same point.
         last_vertex = next->scattered.origin();

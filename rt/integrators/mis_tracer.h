@@ -29,6 +29,21 @@ real power_heuristic(real pdf_taken, real pdf_other);
 // few percent of samples miss, stops speckling.
 enum class light_through_media { sampled, expected };
 
+// The light media scatter once towards a segment's origin, estimated along the whole segment
+// (in_scattering.h), and the medium points whose own light that replaces.
+class segment_in_scattering {
+  public:
+    virtual ~segment_in_scattering() = default;
+    // Whether hit `rec`, made along r, is a medium's point whose light along() counted for the
+    // segment that reached it: that point aims at no light, and its next segment counts none
+    // the light set could have aimed at.
+    virtual bool covers(const ray& r, const hit_record& rec) const = 0;
+    // The estimate for segment r, whose nearest hit (if `found`) is `nearest`.
+    virtual color along(const ray& r, bool found, const hit_record& nearest, sampler& s) const = 0;
+};
+using in_scattering_maker = std::shared_ptr<const segment_in_scattering> (*)(
+    const hittable& world, const light_set& lights);
+
 // What chapter 17 adds to the way a path meets lights; the defaults are chapter 15's.
 struct mis_choices {
     light_through_media through_media = light_through_media::sampled;
@@ -38,6 +53,10 @@ struct mis_choices {
     // from it too, and each way weighed by its density, instead of its direction only
     // followed. A broad fuzz sees a lamp by its scattered ray rarely, by a shadow ray always.
     bool weigh_fuzzy_metal = false;
+    // Makes what lets each segment through a medium aim at the lights from a point chosen
+    // along it (in_scattering::make: equiangular sampling); nullptr: only from where the ray
+    // scatters.
+    in_scattering_maker aim_along_rays = nullptr;
 };
 // [ch17 end]
 
@@ -47,6 +66,10 @@ class mis_tracer : public radiance_estimator {
     // [ch17 begin]
     mis_tracer(std::shared_ptr<const hittable> world, const background& sky,
                const mis_choices& choices);
+    // What choices.aim_along_rays makes holds this tracer's light set by reference: a copy, or
+    // a tracer moved from, would leave it pointing at another's.
+    mis_tracer(const mis_tracer&)            = delete;
+    mis_tracer& operator=(const mis_tracer&) = delete;
     // [ch17 end]
 
     // Per path segment at an evaluable material: 3 dimensions for the light sample, then the
@@ -73,7 +96,8 @@ class mis_tracer : public radiance_estimator {
     std::shared_ptr<const hittable> world;
     background sky;
     light_set lights;
-    mis_choices choices;  // [ch17]
+    mis_choices choices;                                      // [ch17]
+    std::shared_ptr<const segment_in_scattering> along_rays;  // [ch17] choices.aim_along_rays
 };
 
 // The scene's job, with next-event estimation and MIS.

@@ -41,6 +41,12 @@ class light {
     // The same density when a ray from ref along wi is already known to hit this light at
     // `hit` (saves intersecting the light again).
     virtual real pdf_at(const point3& ref, const vec3& wi, const hit_record& hit) const = 0;
+
+    // [ch17 begin]
+    // A point the light's power gathers around, for aiming at it along a whole ray through a
+    // medium (rt/integrators/in_scattering.h); false where there is none (the sky).
+    virtual bool center(point3& /*at*/) const { return false; }
+    // [ch17 end]
 };
 
 }  // namespace rt

@@ -51,6 +51,7 @@ class light_set {
 
     bool empty() const { return lights.empty(); }
     std::size_t size() const { return lights.size(); }
+    const light& operator[](std::size_t i) const { return *lights[i]; }  // [ch17]
 
     // Chooses a light with pick (uniform in [0, 1)) and samples it from ref; out.pdf includes
     // the probability of the choice.

@@ -47,4 +47,11 @@ real quad_light::pdf_at(const point3& ref, const vec3& wi, const hit_record& hit
     // [exercise quad_light::pdf_at end]
 }
 
+// [ch17 begin]
+bool quad_light::center(point3& at) const {
+    at = shape->corner() + (shape->edge_u() + shape->edge_v()) / 2;
+    return true;
+}
+// [ch17 end]
+
 }  // namespace rt

@@ -18,6 +18,7 @@ class quad_light : public light {
     bool sample(const point3& ref, sample2 u, light_sample& out) const override;
     real pdf(const point3& ref, const vec3& wi) const override;
     real pdf_at(const point3& ref, const vec3& wi, const hit_record& hit) const override;
+    bool center(point3& at) const override;  // [ch17]
 
   protected:
     // The sample towards `target`, a point of the quad, with the given density (when the

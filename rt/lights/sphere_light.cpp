@@ -73,4 +73,11 @@ real sphere_light::pdf_at(const point3& ref, const vec3& wi, const hit_record& h
     // [exercise sphere_light::pdf_at end]
 }
 
+// [ch17 begin]
+bool sphere_light::center(point3& at) const {
+    at = shape->center();
+    return true;
+}
+// [ch17 end]
+
 }  // namespace rt

@@ -20,6 +20,7 @@ class sphere_light : public light {
     bool sample(const point3& ref, sample2 u, light_sample& out) const override;
     real pdf(const point3& ref, const vec3& wi) const override;
     real pdf_at(const point3& ref, const vec3& wi, const hit_record& hit) const override;
+    bool center(point3& at) const override;  // [ch17]
 
     // 1 - cos theta_max for a sphere whose sin^2 theta_max is s, without the cancellation of
     // 1 - sqrt(1 - s) when the sphere is small or far (s near 0).

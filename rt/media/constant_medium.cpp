@@ -20,7 +20,7 @@ constant_medium::constant_medium(const bounded_object& b, real density,
                                  std::shared_ptr<texture> albedo)
     : boundary(b.object), box(b.box), neg_inv_density(-1 / density) {
     require_positive(density, "medium density");
-    given_density  = density;  // [ch19]
+    given_density  = density;  // [ch17]
     phase_function = std::make_shared<isotropic>(std::move(albedo));
     id             = hash_values(bits_of(density),
                                  hash_values(bits_of(box.x.min), bits_of(box.y.min), bits_of(box.z.min)),

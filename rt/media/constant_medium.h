@@ -45,11 +45,19 @@ class constant_medium : public bounded_hittable {
     // The uniform number in (0, 1] this medium draws for ray r.
     real random_for(const ray& r) const;
 
-    // [ch19 begin]
-    // What it was made with, for a scene file (rt/scene_files).
-    const std::shared_ptr<hittable>& boundary_object() const { return boundary; }
+    // [ch17 begin]
+    // What it was made with: for aiming at the lights along a ray through it
+    // (rt/integrators/in_scattering.h), and for a scene file (rt/scene_files).
     real density() const { return given_density; }
     const material& phase() const { return *phase_function; }
+    // The stretch [t_in, t_out) of r inside the boundary and within ray_t; false if none.
+    bool stretch(const ray& r, interval ray_t, real& t_in, real& t_out) const {
+        return inside_stretch(r, ray_t, t_in, t_out);
+    }
+    // [ch17 end]
+
+    // [ch19 begin]
+    const std::shared_ptr<hittable>& boundary_object() const { return boundary; }
     // [ch19 end]
 
   private:
@@ -61,7 +69,7 @@ class constant_medium : public bounded_hittable {
     real neg_inv_density;
     std::shared_ptr<material> phase_function;
     std::uint64_t id;
-    real given_density = 0;  // [ch19] as given: -1 / neg_inv_density need not give it back
+    real given_density = 0;  // [ch17] as given: -1 / neg_inv_density need not give it back
 };
 
 }  // namespace rt

@@ -46,6 +46,15 @@ class sampler {
     // points stay evenly spread. Independent numbers need no layout: their sampler ignores it.
     static constexpr int camera_draws = 4, draws_per_segment = 8;
     void start_segment(int segment) { draw = camera_draws + segment * draws_per_segment; }
+    // [ch16 end]
+    // [ch17 begin]
+    // Draws beside the layout, for an estimate a segment may add (chapter 17's in-scattering
+    // towards the lights): segment k's side draws start at draw 2^30 + 8 k, far past any path's
+    // own, so adding them moves no other draw and none is shared with another use.
+    static constexpr int side_draws_from = 1 << 30;
+    void start_side_draws(int segment) { draw = side_draws_from + segment * draws_per_segment; }
+    // [ch17 end]
+    // [ch16 begin]
 
   protected:
     int draw = 0;  // the next draw's place in the layout (start_segment)
