@@ -111,11 +111,6 @@ real in_scattering::sample_distance(const point3& origin, const vec3& unit_direc
 
 color in_scattering::along(const ray& r, bool found_hit, const hit_record& nearest,
                            sampler& s) const {
-    // Which medium, then (the same number, stretched) which light's density; where; and the
-    // light sample's own three.
-    const sample2 u_choice = s.next_2d();
-    const real u_pick      = s.next_1d();
-    const sample2 u_on     = s.next_2d();
     if (found.empty() || lights.empty()) return color(0, 0, 0);
 
     // Up to a surface the segment found; past a medium's random point, which the ray crosses
@@ -134,7 +129,13 @@ color in_scattering::along(const ray& r, bool found_hit, const hit_record& neare
         ++count;
     }
     if (count == 0) return color(0, 0, 0);
-    const int k        = std::min(count - 1, static_cast<int>(u_choice.u * real(count)));
+    // Drawn only for a segment that crosses a medium: side draws keep their places whether or
+    // not earlier segments drew. Which medium, then (the same number, stretched) which light's
+    // density; where; and the light sample's own three.
+    const sample2 u_choice = s.next_2d();
+    const real u_pick      = s.next_1d();
+    const sample2 u_on     = s.next_2d();
+    const int k            = std::min(count - 1, static_cast<int>(u_choice.u * real(count)));
     const real u_light = std::min(u_choice.u * real(count) - real(k), real(1) - epsilon_below_1);
     crossing chosen;
     if (k < max_kept) {

@@ -36,7 +36,7 @@ class in_scattering final : public segment_in_scattering {
 
     // The light scattered once towards r's origin along r, for a segment whose nearest hit
     // (if `found`) is `nearest`: up to a surface it found, or through the media's whole stretch
-    // when it found a medium's random point or nothing. Draws 6 numbers.
+    // when it found a medium's random point or nothing. Draws 6 numbers if it crosses a medium.
     color along(const ray& r, bool found, const hit_record& nearest, sampler& s) const override;
 
     // The density along the ray's unit direction with which along() takes the point at
