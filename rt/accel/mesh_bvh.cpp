@@ -171,8 +171,10 @@ mesh_bvh::mesh_bvh(std::shared_ptr<const bvh> tree) : binary(std::move(tree)) {
         const bvh::node& b = nodes_of[i];
         below[i]           = b.count > 0 ? b.count : below[i + 1] + below[b.offset];
     }
-    triangles.reserve(binary->object_count());
     root = pack(0);
+    // Their room doubled as they grew; a tree is kept for as long as its scene.
+    nodes.shrink_to_fit();
+    leaves.shrink_to_fit();
 }
 
 // A binary subtree of up to four triangles: one leaf, tested at once. Its triangles are kept in
@@ -202,18 +204,23 @@ std::uint32_t mesh_bvh::pack_leaf(std::uint32_t index) {
     collect(collect, index, {});
     if (items.empty() || items.size() > 4)
         throw std::logic_error("mesh_bvh: a leaf of none or more than four triangles");
-    const auto first     = std::uint32_t(triangles.size());
-    std::uint64_t orders = 0;
+    leaf packed{};
     for (int octant = 0; octant < 8; ++octant) {
         const std::vector<std::size_t> lane_of = visiting_order(paths, octant);
         for (std::size_t i = 0; i < lane_of.size(); ++i)
-            orders |= std::uint64_t(lane_of[i]) << (8 * octant + 2 * int(i));
+            packed.visit_order |= std::uint64_t(lane_of[i]) << (8 * octant + 2 * int(i));
     }
-    for (const std::uint32_t triangle : items) {
-        triangles.push_back(triangle);
-        corners.push_back(mesh->triangle(triangle));
-        visit_orders.push_back(orders);
+    const point3* p = mesh->data().positions.data();
+    for (std::size_t lane = 0; lane < 4; ++lane) {
+        const std::uint32_t triangle = items[lane < items.size() ? lane : 0];
+        packed.triangle[lane]        = triangle;
+        const auto& v                = mesh->triangle(triangle);
+        for (int vertex = 0; vertex < 3; ++vertex)
+            for (int axis = 0; axis < 3; ++axis)
+                packed.corner[3 * vertex + axis][lane] = p[v[std::size_t(vertex)]][axis];
     }
+    const auto first = std::uint32_t(leaves.size());
+    leaves.push_back(packed);
     return leaf_bit | first << 2 | std::uint32_t(items.size() - 1);
 }
 
@@ -289,33 +296,23 @@ std::uint32_t mesh_bvh::pack(std::uint32_t index) {
 // Up to four triangles as four lanes, each lane intersect_triangle's arithmetic, operation for
 // operation (chapter 18's layer fuses no multiply-add), so each lane's answer is bit for bit
 // the one that triangle gives alone.
-[[gnu::always_inline]] inline bool mesh_bvh::hit_leaf(std::uint32_t leaf, int octant,
+[[gnu::always_inline]] inline bool mesh_bvh::hit_leaf(std::uint32_t leaf_index, int octant,
                                                       const sheared_ray& sr, interval& ray_t,
                                                       triangle_hit& nearest,
                                                       std::uint32_t& nearest_index) const {
-    using real4               = real __attribute__((vector_size(4 * sizeof(real))));
-    const std::uint32_t first = (leaf & ~leaf_bit) >> 2, count = (leaf & 3u) + 1;
-    const point3* p = mesh->data().positions.data();
-    const point3* v0[4];
-    const point3* v1[4];
-    const point3* v2[4];
-    for (std::uint32_t j = 0; j < 4; ++j) {
-        const auto& v = corners[first + (j < count ? j : 0)];
-        v0[j]         = &p[v[0]];
-        v1[j]         = &p[v[1]];
-        v2[j]         = &p[v[2]];
-    }
+    const leaf& l             = leaves[(leaf_index & ~leaf_bit) >> 2];
+    const std::uint32_t count = (leaf_index & 3u) + 1;
     // Each lane's vertex minus the origin, as intersect_triangle's vec3 subtraction, turned as
     // sheared_ray says (z along the ray's largest direction component). (Written into `out`:
     // a vector returned by value would change with the processor's vector width.)
-    auto lanes = [&](const point3* const* q, int axis, real4& out) {
+    auto lanes = [&](int vertex, int axis, real4& out) {
         const real o = sr.origin[axis];
-        out = real4{(*q[0])[axis], (*q[1])[axis], (*q[2])[axis], (*q[3])[axis]} - real4{o, o, o, o};
+        out          = l.corner[3 * vertex + axis] - real4{o, o, o, o};
     };
     real4 ax, ay, az, bx, by, bz, cx, cy, cz;
-    lanes(v0, sr.kx, ax), lanes(v0, sr.ky, ay), lanes(v0, sr.kz, az);
-    lanes(v1, sr.kx, bx), lanes(v1, sr.ky, by), lanes(v1, sr.kz, bz);
-    lanes(v2, sr.kx, cx), lanes(v2, sr.ky, cy), lanes(v2, sr.kz, cz);
+    lanes(0, sr.kx, ax), lanes(0, sr.ky, ay), lanes(0, sr.kz, az);
+    lanes(1, sr.kx, bx), lanes(1, sr.ky, by), lanes(1, sr.kz, bz);
+    lanes(2, sr.kx, cx), lanes(2, sr.ky, cy), lanes(2, sr.kz, cz);
     const real4 x0 = ax - sr.sx * az, y0 = ay - sr.sy * az;
     const real4 x1 = bx - sr.sx * bz, y1 = by - sr.sy * bz;
     const real4 x2 = cx - sr.sx * cz, y2 = cy - sr.sy * cz;
@@ -334,7 +331,7 @@ std::uint32_t mesh_bvh::pack(std::uint32_t index) {
     const real4 t        = scaled_t * inv_det;
     const auto ok        = through & (t > ray_t.min) & (t < ray_t.max);
     // In the binary tree's visiting order for this ray: of equal distances, the first wins.
-    const auto order = unsigned(visit_orders[first] >> (8 * octant));
+    const auto order = unsigned(l.visit_order >> (8 * octant));
     int chosen       = -1;
     for (std::uint32_t i = 0; i < count; ++i) {
         const unsigned j = order >> (2 * i) & 3u;
@@ -346,7 +343,7 @@ std::uint32_t mesh_bvh::pack(std::uint32_t index) {
     if (chosen < 0) return false;
     nearest       = {t[chosen], e0[chosen] * inv_det[chosen], e1[chosen] * inv_det[chosen],
                      e2[chosen] * inv_det[chosen]};
-    nearest_index = triangles[first + std::uint32_t(chosen)];
+    nearest_index = l.triangle[chosen];
     return true;
 }
 
