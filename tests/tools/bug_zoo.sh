@@ -121,6 +121,20 @@ colour = \"red\""
     expect_refusal refuses_unknown_key "an edit has exactly the keys file, find, replace" --list
 }
 
+case_refuses_bad_options() {
+    local option
+    for option in '"--medium-light along-rays"' '"--scene", "final"' '"; rm -rf /"' '1'; do
+        zoo ch01.toml "$(mistake twice-plus rt/one.h 'return 2 * x;' 'return 2 + x;' |
+            sed "s|^seen = .*|&\noptions = [$option]|")"
+        expect_refusal refuses_bad_options "'options' must be a list of the chapter's" --list
+    done
+    # A flag and its value, each an item: listed.
+    zoo ch01.toml "$(mistake twice-plus rt/one.h 'return 2 * x;' 'return 2 + x;' |
+        sed 's|^seen = .*|&\noptions = ["--medium-light", "along-rays"]|')"
+    "$fixture/tools/bug-zoo" --list >"$work/out" 2>"$work/err" ||
+        fail refuses_bad_options "good options refused: $(cat "$work/err")"
+}
+
 case_refuses_duplicate_name() {
     zoo ch01.toml "$(mistake same rt/one.h 'return 2 * x;' 'return 2 + x;')"
     zoo ch02.toml "$(mistake same rt/two.h 'return 2;' 'return 3;')"
