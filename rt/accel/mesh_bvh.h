@@ -68,11 +68,8 @@ class mesh_bvh final : public bounded_hittable {
         // k), the lane of the i-th visit in bits 3i to 3i + 2.
         std::uint32_t order[8];
     };
-    // A leaf's triangles, side by side as the four lanes test them: a copy of their corners'
-    // coordinates (the mesh keeps its vertices once; this copy is the tree's, as wide trees keep
-    // their leaves' triangles, so that a leaf is one contiguous read rather than a lookup of
-    // indices and then of twelve vertices scattered over the mesh). Lanes past the leaf's
-    // triangles repeat its first.
+    // A leaf's triangles, side by side as the four lanes test them (the copy of their corners
+    // the header's comment explains). Lanes past the leaf's triangles repeat its first.
     struct alignas(32) leaf {
         real4 corner[9];  // corner[3 * vertex + axis][lane]
         // Per octant of ray directions, the lane of the i-th visit in bits 8 * octant + 2i and
