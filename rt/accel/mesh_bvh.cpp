@@ -299,7 +299,7 @@ std::uint32_t mesh_bvh::pack(std::uint32_t index) {
 [[gnu::always_inline]] inline bool mesh_bvh::hit_leaf(std::uint32_t leaf_index, int octant,
                                                       const sheared_ray& sr, interval& ray_t,
                                                       triangle_hit& nearest,
-                                                      std::uint32_t& nearest_index) const {
+                                                      leaf_lane& nearest_at) const {
     const leaf& l             = leaves[(leaf_index & ~leaf_bit) >> 2];
     const std::uint32_t count = (leaf_index & 3u) + 1;
     // Each lane's vertex minus the origin, as intersect_triangle's vec3 subtraction, turned as
@@ -341,18 +341,23 @@ std::uint32_t mesh_bvh::pack(std::uint32_t index) {
         }
     }
     if (chosen < 0) return false;
-    nearest       = {t[chosen], e0[chosen] * inv_det[chosen], e1[chosen] * inv_det[chosen],
-                     e2[chosen] * inv_det[chosen]};
-    nearest_index = l.triangle[chosen];
+    nearest    = {t[chosen], e0[chosen] * inv_det[chosen], e1[chosen] * inv_det[chosen],
+                  e2[chosen] * inv_det[chosen]};
+    nearest_at = {&l, int(chosen)};
     return true;
 }
 
-// The record mesh_triangle::hit fills, for the nearest hit, once.
-void mesh_bvh::record(std::uint32_t index, const triangle_hit& found, const ray& r,
+// The record mesh_triangle::hit fills, for the nearest hit, once: from the corners its leaf
+// holds (the mesh's own, copied), which the traversal has just read.
+void mesh_bvh::record(const leaf_lane& at, const triangle_hit& found, const ray& r,
                       hit_record& rec) const {
-    const point3* p = mesh->data().positions.data();
-    const auto& v   = mesh->triangle(index);
-    record_triangle_hit(found, p[v[0]], p[v[1]], p[v[2]], r, rec);
+    point3 p[3];
+    for (int vertex = 0; vertex < 3; ++vertex)
+        p[vertex] =
+            point3(at.in->corner[3 * vertex][at.lane], at.in->corner[3 * vertex + 1][at.lane],
+                   at.in->corner[3 * vertex + 2][at.lane]);
+    const std::uint32_t index = at.in->triangle[at.lane];
+    record_triangle_hit(found, p[0], p[1], p[2], r, rec);
     mesh->shade(index, found, r, rec);
     rec.mat    = mesh->surface();
     rec.object = &mesh->faces()[index];
@@ -366,12 +371,12 @@ void mesh_bvh::record(std::uint32_t index, const triangle_hit& found, const ray&
 RT_ALSO_FOR_AVX2 bool mesh_bvh::closest_hit(const ray& r, interval ray_t, hit_record& rec) const {
     const sheared_ray sr(r);
     triangle_hit nearest;
-    std::uint32_t nearest_index = 0;
+    leaf_lane nearest_at;
     if (root & leaf_bit) {
         int octant = 0;
         for (int axis = 0; axis < 3; ++axis) octant |= 1 / r.direction()[axis] < 0 ? 1 << axis : 0;
-        if (!hit_leaf(root, octant, sr, ray_t, nearest, nearest_index)) return false;
-        record(nearest_index, nearest, r, rec);
+        if (!hit_leaf(root, octant, sr, ray_t, nearest, nearest_at)) return false;
+        record(nearest_at, nearest, r, rec);
         return true;
     }
     const float_slabs fs(r);
@@ -389,7 +394,7 @@ RT_ALSO_FOR_AVX2 bool mesh_bvh::closest_hit(const ray& r, interval ray_t, hit_re
     float8 t_max          = (float8{} + rounded_up(ray_t.max));
     while (true) {
         if (current & leaf_bit) {
-            if (hit_leaf(current, fs.octant, sr, ray_t, nearest, nearest_index)) {
+            if (hit_leaf(current, fs.octant, sr, ray_t, nearest, nearest_at)) {
                 hit_anything = true;
                 t_max        = (float8{} + rounded_up(ray_t.max));
             }
@@ -414,7 +419,7 @@ RT_ALSO_FOR_AVX2 bool mesh_bvh::closest_hit(const ray& r, interval ray_t, hit_re
         }
         do {
             if (top == 0) {
-                if (hit_anything) record(nearest_index, nearest, r, rec);
+                if (hit_anything) record(nearest_at, nearest, r, rec);
                 return hit_anything;
             }
             --top;

