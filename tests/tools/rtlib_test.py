@@ -184,6 +184,39 @@ class RareSamples(unittest.TestCase):
         self.assertEqual(out[0, 0, 1], -5.0)   # the short side's kept
         self.assertEqual(out[0, 0, 2], 5.0)    # no skew, no change
 
+
+class ZScale(unittest.TestCase):
+    """The block test's z is standard normal for a render of the same scene, whether our renders
+    are made at the student's spp or at fewer and scaled: pixels are means of independent
+    samples (normal, by the central limit theorem), ours K renders of them, the student's one.
+    Over 3,072 block tests the spread of z is 1 within 15 %: a little below 1 (0.90 to 0.95
+    measured), since each block's two pixels farthest from our mean are left out as possibly
+    rare, and the skew's correction, estimated from K renders, narrows z further; both err on
+    the side of fewer false alarms. (Its sampling error is about 2 %.)"""
+
+    def spread(self, spp, rendered, k, seed):
+        from rtlib import display_codes
+        rng = np.random.default_rng(seed)
+        mean, sigma, size, b = 0.4, 0.3, 512, 16
+        # Each pixel its own brightness, so that the blocks differ as a scene's do.
+        light = mean + 0.1 * rng.random((size, size, 3))
+        renders = light + rng.normal(0, sigma / np.sqrt(rendered), (k, size, size, 3))
+        student = light + rng.normal(0, sigma / np.sqrt(spp), (size, size, 3))
+        exp = block_test.Expectation(renders, rendered, spp, "float", b, display_codes.encode,
+                                     display_codes.encode_continuous)
+        z = exp.z(student)
+        self.assertEqual(z.size, 3072)
+        return float(np.std(z))
+
+    def test_renders_at_the_students_spp(self):
+        self.assertAlmostEqual(self.spread(64, 64, 8, 1), 1, delta=0.15)
+
+    def test_renders_at_fewer_spp_scaled(self):
+        # 10,000 spp from 4 renders at 500: our mean's own error is five times the student's.
+        self.assertAlmostEqual(self.spread(10000, 500, 4, 2), 1, delta=0.15)
+        self.assertAlmostEqual(self.spread(200, 55, 4, 3), 1, delta=0.15)
+
+
 if __name__ == "__main__":
     RENDERER = sys.argv.pop(1)
     unittest.main()

@@ -10,7 +10,7 @@ has K - 1 degrees of freedom, a block's about B^2 (K - 1)). The student's block 
     z = (S - E) / sqrt(V (1 + 1/K)),
 
 standard normal for a render of the same scene by the same estimator (the 1/K: E's own
-error). A block fails beyond the Bonferroni bound that keeps the chance of any false alarm in a
+error, V / K, since E is a mean of K renders at the student's spp). A block fails beyond the Bonferroni bound that keeps the chance of any false alarm in a
 whole image at 1e-3.
 
 Rare samples break that normality: a pixel lit by a path that finds a small bright object once
@@ -29,6 +29,9 @@ curve gives a noisy value (E[f(X)] - f(E[X]) = f''/2 Var X). With A the mean of 
 renders and C the encoding of their mean (itself a mean of K cap samples, biased by 1/K of A's
 bias b), b = (A - C) K / (K - 1), f(mu) = C - b / K and the expectation at n samples is
 f(mu) + b cap / n; the code's rounding adds a variance of 1/12 per pixel that does not scale.
+E is then a mean of K renders at cap spp, not at n: its own error is V n / (cap K), not V / K
+(at n = 10,000 from K = 4 renders at 500, five times the student's own), and
+z = (S - E) / sqrt(V (1 + n / (cap K))).
 
 Float images (PFM, EXR) at the rendered spp are compared capped at 1, as 8-bit ones are by
 their code 255: a heavy tail of rare bright samples is what K renders measure worst.
@@ -87,6 +90,7 @@ class Expectation:
             pixel_var = codes.var(axis=0, ddof=1)
             self.E = blocks(self.mean_pixels, b)
             self.V = blocks(pixel_var, b) / (b * b)
+            self.own_error = 1 / k  # E's variance over V: K renders at the student's spp
         else:
             codes = encode_continuous(renders, encoding)
             a = codes.mean(axis=0)
@@ -99,6 +103,7 @@ class Expectation:
                 pixel_var = pixel_var + 1.0 / 12
             self.E = blocks(self.mean_pixels, b)
             self.V = blocks(pixel_var, b) / (b * b)
+            self.own_error = spp / (rendered * k)  # K renders at fewer spp than the student's
         # A floor under V: a block that our renders never vary (a plain background) may still
         # differ by a last-bit rounding, one code in a few of its pixels, or 1e-6 of a float.
         # (1e-12 more for floats: a block black in every render of ours is judged, not 0 / 0.)
@@ -135,7 +140,8 @@ class Expectation:
                                       np.minimum(student_pixels, self.cap), student_pixels)
         deviation = forgive_rare(student_pixels - self.mean_pixels, student_pixels,
                                  self.seen_low, self.seen_high, self.b)
-        z = (blocks(deviation, self.b) - self.forgiveness) / np.sqrt(self.V * (1 + 1 / self.k))
+        z = ((blocks(deviation, self.b) - self.forgiveness)
+             / np.sqrt(self.V * (1 + self.own_error)))
         return skew_adjusted(z, self.skew)
 
 
