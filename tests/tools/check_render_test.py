@@ -20,11 +20,13 @@ mistakes made from a right render, and on bad input.
                                                   words (SHARED) named so; no other said to
                                                   have it
   check_render_test.py bad-input                  each trouble row: exit 2, one line, no map
-  check_render_test.py false-alarms SCENES WIDTH SPP N [LIMIT]
+  check_render_test.py false-alarms SCENES WIDTH SPP N [LIMIT [BUDGET]]
                                                   N renders with independent seeds of each scene
                                                   (a comma list, or all): the share judged a
                                                   mismatch (the statistic promises at most 1e-3
-                                                  per image); fails above LIMIT (1) in N
+                                                  per image); fails above LIMIT (1) in N; with
+                                                  BUDGET (the checker's --budget), ours are
+                                                  made at fewer spp and scaled
 
 A "student's" render here is our chapter program's, drawn with another seed than the
 checker's own renders, with the book's glass and texture forms (the checker's defaults), and
@@ -257,6 +259,8 @@ def bad_input():
             ("--spp missing at another size", ["ch04", good], "--spp missing"),
             ("an unknown scene", ["ch99", good, "--spp", "4"], "unknown scene 'ch99'"),
             ("--spp 0", ["ch04", good, "--spp", "0"], "--spp must be at least 1"),
+            ("--budget 0", ["ch04", good, "--spp", "4", "--budget", "0"],
+             "--budget must be at least 1"),
             ("a texture scene without --texture", ["ch08", good, "--spp", "4"], "--texture"),
             ("--layout other for a scene without one", ["ch04", good, "--spp", "4", "--layout",
                                                          "other"], "no random layout"),
@@ -287,12 +291,14 @@ def checker_module():
     return module
 
 
-def false_alarms(scene_names, width, spp, n, limit):
+def false_alarms(scene_names, width, spp, n, limit, budget=None):
     """N renders of ours with independent seeds (101..100 + N, none of them the checker's own),
     each written as the book writes it and judged by the checker's verdict on an image as given
     (the same Expectation and bound, in this process: the checker's own renders are made once
     and cached, as a student's run makes them). Prints the share judged a mismatch per scene;
-    fails when a scene has more than `limit` in N."""
+    fails when a scene has more than `limit` in N. `budget` (the checker's --budget) makes our
+    renders fewer spp than the student's, scaled: the expectation a student's large render
+    gets, at a small render's cost."""
     import types
     check = checker_module()
     from rtlib import block_test
@@ -303,7 +309,7 @@ def false_alarms(scene_names, width, spp, n, limit):
                                       else None, texture_decoding="book", fresnel="book")
         scene = check.Scene(name, entry, flags)
         height = scene.height(width)
-        k, rendered = check.measurement(width, height, spp)
+        k, rendered = check.measurement(width, height, spp, budget=budget or check.BUDGET)
         ours = scene.renders(width, height, rendered, k, "book")
         encoding = book_encoding(name)
         b = block_test.block_size(width, height)
@@ -316,7 +322,8 @@ def false_alarms(scene_names, width, spp, n, limit):
                                       expected)
                 alarms += not verdict.ok
                 worst = max(worst, verdict.worst)
-        print(f"false alarms: {name}, {width} x {height}, {spp} spp, {k} renders of ours: "
+        scaled = f" at {rendered} spp, scaled" if rendered < spp else ""
+        print(f"false alarms: {name}, {width} x {height}, {spp} spp, {k} renders of ours{scaled}: "
               f"{alarms} of {n} judged a mismatch (largest worst |z| {worst:.2f}, bound "
               f"{verdict.limit:.2f}; the bound promises 1e-3 per image)", flush=True)
         if alarms > limit:
@@ -338,7 +345,8 @@ def main():
     elif mode == "false-alarms":
         names = sys.argv[2].split(",") if sys.argv[2] != "all" else list(scenes())
         false_alarms(names, int(sys.argv[3]), int(sys.argv[4]), int(sys.argv[5]),
-                     int(sys.argv[6]) if len(sys.argv) > 6 else 1)
+                     int(sys.argv[6]) if len(sys.argv) > 6 else 1,
+                     int(sys.argv[7]) if len(sys.argv) > 7 else None)
     else:
         raise SystemExit(f"unknown mode {mode}")
     return 1 if failures else 0
