@@ -10,8 +10,8 @@ has K - 1 degrees of freedom, a block's about B^2 (K - 1)). The student's block 
     z = (S - E) / sqrt(V (1 + 1/K)),
 
 standard normal for a render of the same scene by the same estimator (the 1/K: E's own
-error, V / K, since E is a mean of K renders at the student's spp). A block fails beyond the Bonferroni bound that keeps the chance of any false alarm in a
-whole image at 1e-3.
+error, V / K, since E is a mean of K renders at the student's spp). A block fails beyond the
+Bonferroni bound that keeps the chance of any false alarm in a whole image at 1e-3.
 
 Rare samples break that normality: a pixel lit by a path that finds a small bright object once
 in hundreds of samples is mostly one value and rarely a far one, and one such pixel in a block
