@@ -110,7 +110,6 @@ class Expectation:
         floor = ((0.5 ** 2) / (b * b) if encoding != "float"
                  else (1e-6 * np.abs(self.E)) ** 2 + 1e-24)
         self.V = np.maximum(self.V, floor)
-        self.k = k
         # The values our renders gave around each block (its own and its eight neighbours'),
         # per channel: a student's pixel within them may be a rare sample, one outside may not.
         lowest, highest = blocks_extreme(codes, b, np.min), blocks_extreme(codes, b, np.max)
