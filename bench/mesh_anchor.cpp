@@ -156,7 +156,8 @@ std::vector<rt::ray> rays_at(const rt::hittable& ours, const rt::aabb& box, std:
         for (int i = 0; i < side; ++i) {
             const rt::real x = (rt::real(i) + rng.uniform()) / rt::real(side) - rt::real(0.5);
             const rt::real y = (rt::real(j) + rng.uniform()) / rt::real(side) - rt::real(0.5);
-            rays.push_back(rt_bench::to_float(rt::ray(eye, forward + 0.55 * (x * right + y * up))));
+            rays.push_back(
+                rt_bench::to_float(rt::ray(eye, forward + rt::real(0.55) * (x * right + y * up))));
         }
     const std::size_t camera = rays.size();
     for (std::size_t k = 0; k < camera && rays.size() < count; ++k) {
