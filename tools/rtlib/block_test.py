@@ -125,7 +125,8 @@ class Expectation:
         # The block mean's skewness (its pixels' third central moments add up, as their
         # variances do), k-statistic per pixel; at more samples than rendered it falls as
         # 1 / sqrt(spp), as a mean's skewness does.
-        third = (((codes - centre) ** 3).sum(axis=0) * k / ((k - 1) * (k - 2)) if k > 2
+        spread = codes - centre
+        third = ((spread * spread * spread).sum(axis=0) * k / ((k - 1) * (k - 2)) if k > 2
                  else np.zeros_like(centre))
         self.skew = (blocks(third, b) / (b * b) ** 2 / self.V ** 1.5) * spread_scale
         self.forgiveness = np.mean([
@@ -191,11 +192,16 @@ def forgive_rare(deviation, pixels, low, high, b):
                  & (v <= high[:, np.newaxis, :, np.newaxis, :]) & np.isfinite(d))
     size = np.where(plausible, np.abs(d), -1.0)
     # Per block and channel, the FORGIVEN largest plausible deviations (exactly that many:
-    # ties of 8-bit codes must not forgive a whole block that is off by one code).
+    # ties of 8-bit codes must not forgive a whole block that is off by one code), of tied ones
+    # the last: each pass takes the last of the largest left (a stable sort's choice, in linear
+    # time).
     flat = size.transpose(0, 2, 4, 1, 3).reshape(h // b, w // b, 3, b * b)
-    largest = np.argsort(flat, axis=-1, kind="stable")[..., -FORGIVEN:]
     chosen = np.zeros(flat.shape, dtype=bool)
-    np.put_along_axis(chosen, largest, True, axis=-1)
+    left = flat.copy()
+    for _ in range(FORGIVEN):
+        last = b * b - 1 - np.argmax(left[..., ::-1], axis=-1)[..., np.newaxis]
+        np.put_along_axis(chosen, last, True, axis=-1)
+        np.put_along_axis(left, last, -np.inf, axis=-1)
     chosen &= flat > 0
     forgiven = chosen.reshape(h // b, w // b, 3, b, b).transpose(0, 3, 1, 4, 2)
     out = np.array(deviation, dtype=np.float64)
