@@ -36,7 +36,9 @@ def chapter_targets(src, tree, chapter, program):
         names.add(f"tests_{chapter}")
     for _, _, command, _, _ in chapter_tests(tree, chapter):
         for word in command:
-            if word.startswith(tree + os.sep) and "CMakeFiles" not in word:
+            # (a folder of the tree, which a script takes as its argument, is no target)
+            if (word.startswith(tree + os.sep) and "CMakeFiles" not in word
+                    and not os.path.isdir(word)):
                 base = os.path.basename(word)
                 if re.fullmatch(r"[A-Za-z0-9_]+", base):
                     names.add(base)
