@@ -46,6 +46,8 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 from rtlib import display_codes, pfm  # noqa: E402
 
+import checker_in_process  # noqa: E402
+
 CHECK = os.path.join(ROOT, "tools", "check-render")
 TEXTURE = os.path.join(ROOT, "assets", "globe.png")
 failures = []
@@ -102,8 +104,7 @@ def write_pfm(path, linear):
 
 def checker(scene, image, *flags):
     extra = ["--texture", TEXTURE] if scenes()[scene].get("texture") else []
-    run = subprocess.run([CHECK, scene, image, *extra, *flags], capture_output=True, text=True)
-    return run.returncode, run.stdout, run.stderr
+    return checker_in_process.run([scene, image, *extra, *flags])
 
 
 def match(scene, width, spps):
@@ -280,17 +281,6 @@ def bad_input():
                 print(f"ok: {what}: {lines[0]}")
 
 
-def checker_module():
-    """tools/check-render as a module: its Scene, renders and verdict, in this process."""
-    import importlib.machinery
-    import importlib.util
-    loader = importlib.machinery.SourceFileLoader("check_render", CHECK)
-    spec = importlib.util.spec_from_loader("check_render", loader)
-    module = importlib.util.module_from_spec(spec)
-    loader.exec_module(module)
-    return module
-
-
 def false_alarms(scene_names, width, spp, n, limit, budget=None):
     """N renders of ours with independent seeds (101..100 + N, none of them the checker's own),
     each written as the book writes it and judged by the checker's verdict on an image as given
@@ -300,7 +290,7 @@ def false_alarms(scene_names, width, spp, n, limit, budget=None):
     renders fewer spp than the student's, scaled: the expectation a student's large render
     gets, at a small render's cost."""
     import types
-    check = checker_module()
+    check = checker_in_process.module()
     from rtlib import block_test
     registry = scenes()
     for name in scene_names:

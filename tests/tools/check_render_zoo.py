@@ -24,13 +24,13 @@ that chapter's mistakes; --maps writes the checker's maps there instead of besid
 import argparse
 import json
 import os
-import subprocess
 import sys
 import tomllib
 
+import checker_in_process
+
 HERE = os.path.dirname(os.path.realpath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
-CHECK = os.path.join(ROOT, "tools", "check-render")
 SPP = 64  # tools/bug-zoo's CATALOGUE_SPP
 
 # Mistakes that are an image-level cause the checker names in its own words.
@@ -87,26 +87,26 @@ def main():
             rows.append((r["name"], scene or "-", "no image", "-"))
             missed += 1
             continue
-        command = [CHECK, scene, image, "--spp", str(SPP), "--encoding", "srgb", "--fresnel",
+        command = [scene, image, "--spp", str(SPP), "--encoding", "srgb", "--fresnel",
                    "schlick", "--texture-decoding", "srgb", "--map",
                    os.path.join(maps, r["name"] + ".check.png")]
         if args.renders:
             command += ["--renders", str(args.renders)]
         if scenes[scene].get("texture"):
             command += ["--texture", os.path.join(ROOT, "assets", "globe.png")]
-        run = subprocess.run(command, capture_output=True, text=True)
-        causes = [line.strip() for line in run.stdout.splitlines()
+        code, out, err = checker_in_process.run(command)
+        causes = [line.strip() for line in out.splitlines()
                   if line.startswith("likely cause") or line.startswith("  or:")]
-        said = " ".join(causes) + run.stderr
-        named = (run.returncode in (1, 2) and f"'{r['name']}'" in said
+        said = " ".join(causes) + err
+        named = (code in (1, 2) and f"'{r['name']}'" in said
                  or IMAGE_LEVEL.get(r["name"], "\0") in said)
-        verdict = {0: "judged a match", 1: "mismatch", 2: "trouble"}.get(run.returncode, "crash")
+        verdict = {0: "judged a match", 1: "mismatch", 2: "trouble"}.get(code, "crash")
         # A mistake whose image is its correct image within noise cannot be seen in an image:
         # the checker is right to call it a match. Counted apart, never hidden.
-        invisible = run.returncode == 0
+        invisible = code == 0
         status = "named" if named else ("not visible in the image" if invisible else "MISSED")
         rows.append((r["name"], scene, verdict, status if named or invisible else
-                     (causes[0] if causes else run.stderr.strip())))
+                     (causes[0] if causes else err.strip())))
         missed += not (named or invisible)
         unseen += invisible
         want = expected.get(r["name"]) if args.expect else None
@@ -114,7 +114,7 @@ def main():
             changed.append(f"{r['name']}: {status}, where {args.expect} says "
                            f"{want or 'nothing'}")
         print(f"{'ok' if named or invisible else 'MISSED'}: {r['chapter']} {r['name']} "
-              f"({scene}): {verdict}; {(causes[0] if causes else run.stderr.strip())}")
+              f"({scene}): {verdict}; {(causes[0] if causes else err.strip())}")
     named_count = len(rows) - missed - unseen
     print(f"check-render: of {len(rows)} mistakes of the zoo, {named_count} judged a mismatch "
           f"and named, {unseen} not visible in their image (judged a match), {missed} missed")
