@@ -48,7 +48,7 @@ from rtlib import display_codes, pfm  # noqa: E402
 
 import checker_in_process  # noqa: E402
 
-CHECK = os.path.join(ROOT, "tools", "check-render")
+CHECK = checker_in_process.CHECK
 TEXTURE = os.path.join(ROOT, "assets", "globe.png")
 failures = []
 

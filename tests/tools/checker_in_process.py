@@ -3,6 +3,7 @@ times, and as a process of its own it spends most of its time on a small image s
 Python interpreter and NumPy, then OpenImageIO's library and all it links (0.45 s of 0.8 s).
 Its command line stays tested as a process by the bad-input entries."""
 import contextlib
+import functools
 import importlib.machinery
 import importlib.util
 import io
@@ -10,18 +11,16 @@ import os
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.realpath(__file__))))
 CHECK = os.path.join(ROOT, "tools", "check-render")
-_loaded = []
 
 
+@functools.cache
 def module():
     """tools/check-render as a module (loaded once): its Scene, renders, verdict and main."""
-    if not _loaded:
-        loader = importlib.machinery.SourceFileLoader("check_render", CHECK)
-        spec = importlib.util.spec_from_loader("check_render", loader)
-        checker = importlib.util.module_from_spec(spec)
-        loader.exec_module(checker)
-        _loaded.append(checker)
-    return _loaded[0]
+    loader = importlib.machinery.SourceFileLoader("check_render", CHECK)
+    spec = importlib.util.spec_from_loader("check_render", loader)
+    checker = importlib.util.module_from_spec(spec)
+    loader.exec_module(checker)
+    return checker
 
 
 def run(args):
