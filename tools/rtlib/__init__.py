@@ -8,6 +8,8 @@
                     and the maps of where two images differ
   rtlib.browser     a headless Chromium driven through its DevTools protocol (the HTML
                     report's test)
+  rtlib.compiler_cache  ccache's settings for the trees tools/bug-zoo and tools/exercise
+                    build (one cache with the release stage's)
 
 A tool finds this package beside itself, from any working directory, and writes no bytecode
 into the tree:
