@@ -172,6 +172,39 @@ case_refuses_no_verify_workers() {
         --workers 0 "$chapter"
 }
 
+# tools/exercise verify's order: each worker a run of consecutive chapters (neighbours share
+# most of their objects), every chapter exactly once, and a worker whose run is done taking the
+# later half of the longest other run, never a chapter another worker has taken.
+case_verify_keeps_neighbouring_chapters_together() {
+    local out
+    out=$(/usr/bin/python3 - "$tool" <<'PYTHON' 2>&1
+import importlib.machinery, importlib.util, sys
+loader = importlib.machinery.SourceFileLoader("exercise", sys.argv[1])
+spec = importlib.util.spec_from_loader("exercise", loader)
+tool = importlib.util.module_from_spec(spec)
+loader.exec_module(tool)
+tags = [f"ch{n:02d}" for n in range(1, 20) if n != 13]
+runs = tool.schedule(tags, 2)
+print([list(r) for r in runs] == [tags[:9], tags[9:]], "two runs")
+runs = tool.schedule(tags[:5], 3)
+print([list(r) for r in runs] == [tags[:2], tags[2:4], tags[4:5]], "three uneven runs")
+runs = tool.schedule(tags, 2)
+mine = [tool.next_chapter(runs, 0) for _ in range(9)]
+theirs = [tool.next_chapter(runs, 1) for _ in range(3)]
+mine += [tool.next_chapter(runs, 0) for _ in range(3)]
+print(mine == tags[:9] + tags[15:18] and theirs == tags[9:12],
+      "own run, then the later half of the other's rest")
+theirs += [tool.next_chapter(runs, 1) for _ in range(3)]
+print(theirs == tags[9:15] and tool.next_chapter(runs, 1) is None
+      and tool.next_chapter(runs, 0) is None, "every chapter once")
+PYTHON
+)
+    grep -q "^False" <<<"$out" && fail verify_keeps_neighbouring_chapters_together "$out"
+    [ "$(grep -c "^True" <<<"$out")" -eq 4 ] ||
+        fail verify_keeps_neighbouring_chapters_together "expected 4 True lines: $out"
+    return 0
+}
+
 cases=("$@")
 [ ${#cases[@]} -eq 0 ] && mapfile -t cases < <(declare -F | awk '{print $3}' | sed -n 's/^case_//p')
 for case in "${cases[@]}"; do
